@@ -1,0 +1,63 @@
+// mink/core/scalar_traits.hpp — what an algorithm may assume about its scalar T.
+//
+// mink runs one template on float, double, long double and exact rational types
+// (CGAL::Gmpq, boost::multiprecision::mpq_rational, ...). Every decision is the sign
+// of a polynomial in the input coordinates; tolerances only widen those signs for
+// inexact scalars and are exactly zero for exact ones. Following Eigen's NumTraits
+// habit, the precision-dependent defaults come from this traits class: specialise it
+// for a custom scalar (e.g. an MPFR float: isExact = false, epsilon() = its ulp).
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include <Eigen/Core>
+
+namespace mink {
+
+template <class T, class Enable = void>
+struct ScalarTraits {
+  /// Arithmetic is exact: +, -, *, / never round. No sqrt is ever called on such a T.
+  static constexpr bool isExact = !std::is_floating_point<T>::value;
+  /// Unit roundoff (0 for an exact type).
+  static T epsilon() {
+    if constexpr (isExact) {
+      return T(0);
+    } else {
+      return Eigen::NumTraits<T>::epsilon();
+    }
+  }
+  static bool isFinite(const T& x) {
+    if constexpr (isExact) {
+      (void)x;
+      return true;
+    } else {
+      using std::isfinite;
+      return isfinite(x);
+    }
+  }
+};
+
+namespace detail {
+
+template <class T>
+T absValue(const T& x) {
+  return x < T(0) ? T(-x) : x;
+}
+
+template <class T>
+int sign(const T& x) {
+  return (T(0) < x) - (x < T(0));
+}
+
+/// Euclidean length, for inexact scalars only (reported values and tolerance scaling).
+template <class Derived>
+typename Derived::Scalar norm(const Eigen::MatrixBase<Derived>& v) {
+  static_assert(!ScalarTraits<typename Derived::Scalar>::isExact,
+                "mink: sqrt must not be taken on an exact scalar");
+  return v.norm();
+}
+
+}  // namespace detail
+}  // namespace mink

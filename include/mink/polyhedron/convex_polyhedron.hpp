@@ -1,0 +1,195 @@
+// mink/polyhedron/convex_polyhedron.hpp — ConvexPolyhedron<T>: a closed convex polyhedron
+// with planar convex faces, half-edge adjacency, face planes and support queries.
+//
+// Built two ways, both ending in the same finishing step:
+//   fromPoints: convex hull by quickhull (Barber, Dobkin, Huhdanpaa 1996) with a
+//               tolerance that is exactly zero for exact scalars;
+//   fromMesh:   validation of a closed, consistently oriented, locally convex mesh
+//               (by van Heijenoort's theorem, local convexity of a closed connected
+//               surface implies global convexity);
+//   finishing:  merge neighbouring faces with the same plane into one convex face (the
+//               MDD paper's "span of faces with the same normal", its section VI-C),
+//               drop vertices that are no longer corners, build the half-edge arrays.
+//
+// Conventions: faces are counter-clockwise seen from outside; face normals point
+// outward; for inexact T they are unit length, for exact T they are Newell normals
+// (exact, not normalised); the plane of face f is { x : normal(f) . x == offset(f) }.
+// Every structure is in the shape's own frame; poses are applied by the queries.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+#include "mink/core/defaults.hpp"
+#include "mink/core/error.hpp"
+#include "mink/core/scalar_traits.hpp"
+#include "mink/core/types.hpp"
+
+namespace mink {
+
+/// Options of shape construction (fromPoints, fromMesh).
+template <class T>
+struct HullOptions {
+  /// Distance under which a point counts as on a plane, in the input's length unit.
+  /// Negative (default): automatic, defaults::kHullToleranceFactor * eps * extent for
+  /// inexact T and exactly 0 for exact T. Zero: decide by the sign of the computed
+  /// value alone.
+  T tolerance = T(-1);
+};
+
+/// Read-only view of a contiguous run of ints (a CSR row).
+class IndexRange {
+ public:
+  IndexRange(const int* b, const int* e) : begin_(b), end_(e) {}
+  const int* begin() const { return begin_; }
+  const int* end() const { return end_; }
+  int size() const { return static_cast<int>(end_ - begin_); }
+  int operator[](int i) const { return begin_[i]; }
+
+ private:
+  const int* begin_;
+  const int* end_;
+};
+
+namespace detail {
+template <class T>
+struct PolyhedronBuilder;
+
+/// Lazily made structures derived from a shape (its Dobkin–Kirkpatrick hierarchy, ...),
+/// shared by every copy of the shape and built at most once, thread-safely. The
+/// polyhedron layer knows nothing of their types; higher layers fill the slots.
+struct DerivedSlot {
+  std::once_flag once;
+  std::shared_ptr<const void> value;
+};
+struct DerivedSlots {
+  enum Id { kHierarchy = 0, kCount };
+  DerivedSlot slot[kCount];
+};
+}  // namespace detail
+
+template <class T>
+class ConvexPolyhedron {
+ public:
+  using Scalar = T;
+
+  /// Convex hull of `points` (any number >= 4, duplicates allowed).
+  /// Throws InvalidInput: empty input, a non-finite coordinate (names the index),
+  /// all points coincident, collinear or coplanar (within the tolerance).
+  static ConvexPolyhedron fromPoints(const std::vector<Vec3<T>>& points,
+                                     const HullOptions<T>& options = {});
+
+  /// A closed convex mesh: `vertices` (#V points), `faces` (#F index loops,
+  /// counter-clockwise seen from outside, each >= 3 distinct in-range indices).
+  /// Unreferenced vertices are ignored. Throws InvalidInput when the input is empty,
+  /// non-finite, has an index out of range, a degenerate face, is not closed (an edge
+  /// with no or several partners), not consistently oriented, oriented inward, not
+  /// connected, not a topological sphere, has a non-planar face or is not convex.
+  static ConvexPolyhedron fromMesh(const std::vector<Vec3<T>>& vertices,
+                                   const std::vector<std::vector<int>>& faces,
+                                   const HullOptions<T>& options = {});
+
+  // ---- counts (V - E + F == 2) ----
+  int numVertices() const { return static_cast<int>(vertices_.size()); }
+  int numEdges() const { return static_cast<int>(edgeHalfEdge_.size()); }
+  int numFaces() const { return static_cast<int>(faceStart_.size()) - 1; }
+  int numHalfEdges() const { return static_cast<int>(heTwin_.size()); }
+
+  // ---- vertices ----
+  const Vec3<T>& vertex(int v) const { return vertices_[v]; }
+  const std::vector<Vec3<T>>& vertices() const { return vertices_; }
+  /// Index of vertex v in the input of fromPoints / fromMesh.
+  int inputIndex(int v) const { return inputIndex_[v]; }
+  /// Neighbouring vertices of v, in counter-clockwise order seen from outside.
+  IndexRange vertexNeighbors(int v) const { return row(vertexStart_, vertexNeighbor_, v); }
+  /// Faces around v, counter-clockwise seen from outside; vertexFaces(v)[i] lies
+  /// between the edges to vertexNeighbors(v)[i] and vertexNeighbors(v)[i+1].
+  IndexRange vertexFaces(int v) const { return row(vertexStart_, vertexFace_, v); }
+  /// Outgoing half-edges of v, same order as vertexNeighbors(v).
+  IndexRange vertexHalfEdges(int v) const { return row(vertexStart_, vertexHalfEdge_, v); }
+  int degree(int v) const { return vertexStart_[v + 1] - vertexStart_[v]; }
+
+  // ---- faces ----
+  /// Vertex loop of f, counter-clockwise seen from outside. Its half-edges are
+  /// faceStart(f) .. faceStart(f+1)-1 in the same order.
+  IndexRange faceVertices(int f) const { return row(faceStart_, heOrigin_, f); }
+  int faceStart(int f) const { return faceStart_[f]; }
+  int faceSize(int f) const { return faceStart_[f + 1] - faceStart_[f]; }
+  /// Outward normal of f (unit for inexact T, exact Newell normal for exact T).
+  const Vec3<T>& faceNormal(int f) const { return faceNormal_[f]; }
+  /// Plane offset: normal(f) . x == faceOffset(f) on the face.
+  const T& faceOffset(int f) const { return faceOffset_[f]; }
+
+  // ---- half-edges: h runs from heOrigin(h) to heOrigin(heNext(h)) on face heFace(h) ----
+  int heOrigin(int h) const { return heOrigin_[h]; }
+  int heTarget(int h) const { return heOrigin_[heNext(h)]; }
+  int heTwin(int h) const { return heTwin_[h]; }
+  int heFace(int h) const { return heFace_[h]; }
+  int heEdge(int h) const { return heEdge_[h]; }
+  int heNext(int h) const {
+    const int f = heFace_[h];
+    return h + 1 == faceStart_[f + 1] ? faceStart_[f] : h + 1;
+  }
+  int hePrev(int h) const {
+    const int f = heFace_[h];
+    return h == faceStart_[f] ? faceStart_[f + 1] - 1 : h - 1;
+  }
+
+  // ---- edges: each undirected edge once ----
+  /// The half-edge of e whose face is edgeFaces(e).first.
+  int edgeHalfEdge(int e) const { return edgeHalfEdge_[e]; }
+  std::pair<int, int> edgeVertices(int e) const {
+    const int h = edgeHalfEdge_[e];
+    return {heOrigin(h), heTarget(h)};
+  }
+  /// (left, right) faces of e: left is on the left of edgeVertices' first -> second.
+  std::pair<int, int> edgeFaces(int e) const {
+    const int h = edgeHalfEdge_[e];
+    return {heFace_[h], heFace_[heTwin_[h]]};
+  }
+
+  // ---- size and tolerance ----
+  /// The tolerance this shape was built with (0 for exact T), in length units.
+  const T& tolerance() const { return tolerance_; }
+  /// |x|max + |y|max + |z|max over the vertices (the scale tolerances are relative to).
+  const T& extent() const { return extent_; }
+
+  // ---- support (extreme vertex) ----
+  /// A vertex maximising direction . x. Hill-climbs the vertex graph from `hint`:
+  /// on a convex polytope a vertex no neighbour of which is strictly better is a
+  /// global maximiser, so the answer is exact for exact T. O(path length * degree).
+  int support(const Vec3<T>& direction, int hint = 0) const;
+  /// Same by scanning every vertex (reference and tiny shapes). Ties: lowest index.
+  int supportBruteForce(const Vec3<T>& direction) const;
+
+  /// Slots for lazily built derived structures (see detail::DerivedSlots).
+  detail::DerivedSlots& derivedSlots() const { return *derived_; }
+
+ private:
+  ConvexPolyhedron() : derived_(std::make_shared<detail::DerivedSlots>()) {}
+  static IndexRange row(const std::vector<int>& start, const std::vector<int>& data, int i) {
+    return IndexRange(data.data() + start[i], data.data() + start[i + 1]);
+  }
+  template <class U>
+  friend struct detail::PolyhedronBuilder;
+
+  std::vector<Vec3<T>> vertices_;
+  std::vector<int> inputIndex_;
+  std::vector<int> vertexStart_, vertexNeighbor_, vertexFace_, vertexHalfEdge_;
+  std::vector<int> faceStart_{0};
+  std::vector<Vec3<T>> faceNormal_;
+  std::vector<T> faceOffset_;
+  std::vector<int> heOrigin_, heTwin_, heFace_, heEdge_;
+  std::vector<int> edgeHalfEdge_;
+  T tolerance_ = T(0);
+  T extent_ = T(0);
+  std::shared_ptr<detail::DerivedSlots> derived_;
+};
+
+}  // namespace mink
+
+#include "mink/polyhedron/detail/convex_polyhedron_impl.hpp"

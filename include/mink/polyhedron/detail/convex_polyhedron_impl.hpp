@@ -1,0 +1,512 @@
+// mink/polyhedron/detail/convex_polyhedron_impl.hpp — construction of ConvexPolyhedron:
+// input checks, fromMesh validation, coplanar-face merging and the half-edge arrays.
+// Included at the bottom of convex_polyhedron.hpp.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "mink/polyhedron/detail/quickhull.hpp"
+
+namespace mink {
+namespace detail {
+
+template <class T>
+struct PolyhedronBuilder {
+  using Poly = ConvexPolyhedron<T>;
+  using Loop = std::vector<int>;
+
+  static std::uint64_t key(int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  }
+
+  static T extentOf(const std::vector<Vec3<T>>& pts) {
+    Vec3<T> m = Vec3<T>::Zero();
+    for (const auto& p : pts)
+      for (int k = 0; k < 3; ++k) m[k] = std::max(m[k], absValue(p[k]));
+    return m[0] + m[1] + m[2];
+  }
+
+  static T toleranceFor(const HullOptions<T>& options, const T& extent, const char* who) {
+    if constexpr (ScalarTraits<T>::isExact) {
+      if (options.tolerance > T(0))
+        throw InvalidInput(std::string(who) + ": a positive tolerance needs an inexact scalar type; "
+                                              "exact scalars decide exactly (tolerance 0)");
+      return T(0);
+    } else {
+      if (!ScalarTraits<T>::isFinite(options.tolerance))
+        throw InvalidInput(std::string(who) + ": tolerance is not finite");
+      if (options.tolerance >= T(0)) return options.tolerance;
+      return T(defaults::kHullToleranceFactor) * ScalarTraits<T>::epsilon() * extent;
+    }
+  }
+
+  static void checkFinite(const std::vector<Vec3<T>>& pts, const char* who, const char* what) {
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      for (int k = 0; k < 3; ++k)
+        if (!ScalarTraits<T>::isFinite(pts[i][k]))
+          throw InvalidInput(std::string(who) + ": " + what + " " + std::to_string(i) +
+                             " has a non-finite coordinate (NaN or Inf)");
+  }
+
+  // Newell normal of a loop, relative to its first vertex (exact for exact T).
+  static Vec3<T> newell(const std::vector<Vec3<T>>& pts, const Loop& loop) {
+    Vec3<T> n = Vec3<T>::Zero();
+    const Vec3<T>& o = pts[loop[0]];
+    for (std::size_t i = 1; i + 1 < loop.size(); ++i)
+      n += (pts[loop[i]] - o).cross(pts[loop[i + 1]] - o);
+    return n;
+  }
+
+  // Normal used for distance tests: unit for inexact T, exact Newell normal otherwise.
+  static Vec3<T> testNormal(const Vec3<T>& n) {
+    if constexpr (ScalarTraits<T>::isExact) {
+      return n;
+    } else {
+      const T len = n.norm();
+      return len > T(0) ? Vec3<T>(n / len) : n;
+    }
+  }
+
+  // ---------------------------------------------------------------------------------
+  // Finishing: from a closed, consistently oriented, convex polygon mesh over `pts`
+  // (loops CCW from outside) to the polyhedron: merge neighbouring polygons lying in one
+  // plane (within tol of the plane of the largest polygon of the group, so merging
+  // cannot drift along a gently curved surface), splice out vertices that are no longer
+  // corners (in fewer than three faces), and lay out the half-edge arrays.
+  // Twins of a closed oriented polygon mesh given as flattened loops: half-edge h runs
+  // from org[h] to org[nxt[h]]. Sorting undirected keys pairs each edge's two halves.
+  static std::vector<int> twinsBySorting(const std::vector<int>& org, const std::vector<int>& nxt) {
+    const int nH = static_cast<int>(org.size());
+    std::vector<std::pair<std::uint64_t, int>> keys(nH);
+    for (int h = 0; h < nH; ++h) {
+      const int a = org[h], b = org[nxt[h]];
+      keys[h] = {key(std::min(a, b), std::max(a, b)), h};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<int> twin(nH, -1);
+    for (int i = 0; i < nH; ++i) {
+      const bool pairPrev = i > 0 && keys[i - 1].first == keys[i].first;
+      const bool pairNext = i + 1 < nH && keys[i + 1].first == keys[i].first;
+      if (pairPrev == pairNext) throw InvalidInput("internal: edge without exactly one partner while building");
+      const int o = pairNext ? keys[i + 1].second : keys[i - 1].second;
+      if (org[o] != org[nxt[keys[i].second]]) throw InvalidInput("internal: inconsistent orientation while building");
+      twin[keys[i].second] = o;
+    }
+    return twin;
+  }
+
+  static Poly finish(const std::vector<Vec3<T>>& pts, const std::vector<Loop>& polys, const T& tol,
+                     const T& extent) {
+    const int nP = static_cast<int>(polys.size());
+    // Flattened input half-edges.
+    std::vector<int> org, nxt, polyOf;
+    std::vector<int> polyStart(nP + 1, 0);
+    for (int f = 0; f < nP; ++f) polyStart[f + 1] = polyStart[f] + static_cast<int>(polys[f].size());
+    const int nH0 = polyStart[nP];
+    org.resize(nH0);
+    nxt.resize(nH0);
+    polyOf.resize(nH0);
+    for (int f = 0; f < nP; ++f) {
+      const int s0 = polyStart[f], m = polyStart[f + 1] - s0;
+      for (int i = 0; i < m; ++i) {
+        org[s0 + i] = polys[f][i];
+        nxt[s0 + i] = s0 + (i + 1) % m;
+        polyOf[s0 + i] = f;
+      }
+    }
+    const std::vector<int> twin0 = twinsBySorting(org, nxt);
+
+    std::vector<Vec3<T>> rawN(nP), unitN(nP);
+    std::vector<T> size2(nP);
+    for (int f = 0; f < nP; ++f) {
+      rawN[f] = newell(pts, polys[f]);
+      unitN[f] = testNormal(rawN[f]);
+      size2[f] = rawN[f].squaredNorm();
+    }
+    std::vector<int> order(nP);
+    for (int f = 0; f < nP; ++f) order[f] = f;
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size2[b] < size2[a]; });
+
+    std::vector<int> group(nP, -1);
+    std::vector<int> queue;
+    int nGroups = 0;
+    for (int seed : order) {
+      if (group[seed] >= 0) continue;
+      const int g = nGroups++;
+      group[seed] = g;
+      queue.assign(1, seed);
+      const Vec3<T>& n = unitN[seed];
+      const Vec3<T>& o = pts[polys[seed][0]];
+      for (std::size_t qi = 0; qi < queue.size(); ++qi) {
+        const int f = queue[qi];
+        for (int h = polyStart[f]; h < polyStart[f + 1]; ++h) {
+          const int nb = polyOf[twin0[h]];
+          if (group[nb] >= 0) continue;
+          if (!(n.dot(rawN[nb]) > T(0))) continue;
+          bool coplanar = true;
+          for (int v : polys[nb]) {
+            if (absValue(n.dot(pts[v] - o)) > tol) {
+              coplanar = false;
+              break;
+            }
+          }
+          if (coplanar) {
+            group[nb] = g;
+            queue.push_back(nb);
+          }
+        }
+      }
+    }
+
+    // Boundary loop of each group: after boundary half-edge h (a -> b), turn around b
+    // through the group's interior edges until the next boundary half-edge.
+    std::vector<std::vector<int>> members(nGroups);
+    for (int f = 0; f < nP; ++f) members[group[f]].push_back(f);
+    std::vector<Loop> faces;
+    faces.reserve(nGroups);
+    std::vector<char> used(nH0, 0);
+    auto interior = [&](int h) { return group[polyOf[twin0[h]]] == group[polyOf[h]]; };
+    for (int g = 0; g < nGroups; ++g) {
+      if (members[g].size() == 1) {
+        faces.push_back(polys[members[g][0]]);
+        continue;
+      }
+      int count = 0, start = -1;
+      for (int f : members[g])
+        for (int h = polyStart[f]; h < polyStart[f + 1]; ++h)
+          if (!interior(h)) {
+            ++count;
+            if (start < 0) start = h;
+          }
+      Loop loop;
+      bool simple = start >= 0;
+      int h = start;
+      while (simple) {
+        loop.push_back(org[h]);
+        used[h] = 1;
+        int c = nxt[h];
+        int guard = 0;
+        while (interior(c) && ++guard <= nH0) c = nxt[twin0[c]];
+        if (guard > nH0) simple = false;
+        h = c;
+        if (h == start) break;
+        if (used[h] || static_cast<int>(loop.size()) > count) simple = false;
+      }
+      simple = simple && static_cast<int>(loop.size()) == count;
+      if (simple) {
+        faces.push_back(std::move(loop));
+      } else {
+        // Only reachable with inexact T (a merged group that is not a disc): keep its
+        // polygons as they are.
+        for (int f : members[g]) faces.push_back(polys[f]);
+      }
+    }
+
+    // Splice out vertices lying in fewer than three faces: on the edge between two
+    // faces (collinear) — a corner of a 3-polytope lies in at least three facets.
+    const int nPts = static_cast<int>(pts.size());
+    std::vector<int> faceCount(nPts, 0);
+    for (const Loop& L : faces)
+      for (int v : L) ++faceCount[v];
+    for (Loop& L : faces) {
+      L.erase(std::remove_if(L.begin(), L.end(), [&](int v) { return faceCount[v] < 3; }), L.end());
+      if (L.size() < 3) throw InvalidInput("internal: degenerate face after merging coplanar faces");
+    }
+
+    // Compact vertex numbering.
+    std::vector<int> newIndex(nPts, -1);
+    Poly P;
+    for (const Loop& L : faces)
+      for (int v : L)
+        if (newIndex[v] < 0) {
+          newIndex[v] = static_cast<int>(P.vertices_.size());
+          P.vertices_.push_back(pts[v]);
+          P.inputIndex_.push_back(v);
+        }
+    const int nV = static_cast<int>(P.vertices_.size());
+    const int nF = static_cast<int>(faces.size());
+    P.faceStart_.assign(1, 0);
+    for (const Loop& L : faces) {
+      for (int v : L) {
+        P.heOrigin_.push_back(newIndex[v]);
+        P.heFace_.push_back(static_cast<int>(P.faceStart_.size()) - 1);
+      }
+      P.faceStart_.push_back(static_cast<int>(P.heOrigin_.size()));
+    }
+    const int nH = static_cast<int>(P.heOrigin_.size());
+    {
+      std::vector<int> nx(nH);
+      for (int h = 0; h < nH; ++h) nx[h] = P.heNext(h);
+      P.heTwin_ = twinsBySorting(P.heOrigin_, nx);
+    }
+    P.heEdge_.assign(nH, -1);
+    for (int h = 0; h < nH; ++h) {
+      if (P.heEdge_[h] >= 0) continue;
+      const int e = static_cast<int>(P.edgeHalfEdge_.size());
+      P.edgeHalfEdge_.push_back(h);
+      P.heEdge_[h] = e;
+      P.heEdge_[P.heTwin_[h]] = e;
+    }
+    // Vertex rings, CCW from outside: the next outgoing half-edge after h (v -> w) is
+    // twin(prev(h)) (v -> u), with face(h) between w and u.
+    std::vector<int> anyOut(nV, -1);
+    for (int h = 0; h < nH; ++h) anyOut[P.heOrigin_[h]] = h;
+    P.vertexStart_.assign(1, 0);
+    for (int v = 0; v < nV; ++v) {
+      const int h0 = anyOut[v];
+      int h = h0;
+      int guard = 0;
+      do {
+        P.vertexHalfEdge_.push_back(h);
+        P.vertexNeighbor_.push_back(P.heTarget(h));
+        P.vertexFace_.push_back(P.heFace_[h]);
+        h = P.heTwin_[P.hePrev(h)];
+        if (++guard > nH) throw InvalidInput("internal: broken vertex ring");
+      } while (h != h0);
+      P.vertexStart_.push_back(static_cast<int>(P.vertexHalfEdge_.size()));
+    }
+    if (P.vertexStart_.back() != nH) throw InvalidInput("internal: non-manifold vertex after merging");
+    if (nV - P.numEdges() + nF != 2) throw InvalidInput("internal: Euler characteristic is not 2 after merging");
+    // Face planes.
+    P.faceNormal_.resize(nF);
+    P.faceOffset_.resize(nF);
+    for (int f = 0; f < nF; ++f) {
+      Loop L(P.faceVertices(f).begin(), P.faceVertices(f).end());
+      const Vec3<T> n = testNormal(newell(P.vertices_, L));
+      P.faceNormal_[f] = n;
+      if constexpr (ScalarTraits<T>::isExact) {
+        P.faceOffset_[f] = n.dot(P.vertices_[L[0]]);
+      } else {
+        T sum = T(0);
+        for (int v : L) sum += n.dot(P.vertices_[v]);
+        P.faceOffset_[f] = sum / T(static_cast<int>(L.size()));
+      }
+    }
+    P.tolerance_ = tol;
+    P.extent_ = extent;
+    return P;
+  }
+
+  // ---------------------------------------------------------------------------------
+  static Poly fromPoints(const std::vector<Vec3<T>>& points, const HullOptions<T>& options) {
+    const char* who = "fromPoints";
+    if (points.empty()) throw InvalidInput("fromPoints: no points given");
+    if (points.size() < 4)
+      throw InvalidInput("fromPoints: need at least 4 points, got " + std::to_string(points.size()));
+    checkFinite(points, who, "point");
+    const T extent = extentOf(points);
+    const T tol = toleranceFor(options, extent, who);
+    const auto tris = Quickhull<T>::run(points, tol);
+    std::vector<Loop> polys;
+    polys.reserve(tris.size());
+    for (const auto& t : tris) polys.push_back({t[0], t[1], t[2]});
+    return finish(points, polys, tol, extent);
+  }
+
+  // ---------------------------------------------------------------------------------
+  static Poly fromMesh(const std::vector<Vec3<T>>& verts, const std::vector<Loop>& faces,
+                       const HullOptions<T>& options) {
+    const char* who = "fromMesh";
+    if (verts.empty()) throw InvalidInput("fromMesh: no vertices given");
+    if (faces.empty()) throw InvalidInput("fromMesh: no faces given");
+    checkFinite(verts, who, "vertex");
+    const int nV = static_cast<int>(verts.size());
+    const int nF = static_cast<int>(faces.size());
+    auto faceName = [](int f) { return "face " + std::to_string(f); };
+    for (int f = 0; f < nF; ++f) {
+      const Loop& L = faces[f];
+      if (L.size() < 3)
+        throw InvalidInput("fromMesh: " + faceName(f) + " has " + std::to_string(L.size()) +
+                           " vertices; a face needs at least 3");
+      for (std::size_t i = 0; i < L.size(); ++i) {
+        if (L[i] < 0 || L[i] >= nV)
+          throw InvalidInput("fromMesh: " + faceName(f) + " has vertex index " + std::to_string(L[i]) +
+                             " out of range [0, " + std::to_string(nV) + ")");
+        for (std::size_t j = 0; j < i; ++j)
+          if (L[j] == L[i])
+            throw InvalidInput("fromMesh: " + faceName(f) + " repeats vertex " + std::to_string(L[i]));
+      }
+    }
+    // Only referenced vertices count (for extent and tolerance too).
+    std::vector<char> used(nV, 0);
+    for (const Loop& L : faces)
+      for (int v : L) used[v] = 1;
+    std::vector<Vec3<T>> usedPts;
+    for (int v = 0; v < nV; ++v)
+      if (used[v]) usedPts.push_back(verts[v]);
+    const T extent = extentOf(usedPts);
+    const T tol = toleranceFor(options, extent, who);
+
+    // Closed, consistently oriented 2-manifold.
+    std::unordered_map<std::uint64_t, int> owner;
+    owner.reserve(static_cast<std::size_t>(nF) * 4);
+    for (int f = 0; f < nF; ++f) {
+      const Loop& L = faces[f];
+      for (std::size_t i = 0; i < L.size(); ++i) {
+        const int a = L[i], b = L[(i + 1) % L.size()];
+        if (!owner.emplace(key(a, b), f).second)
+          throw InvalidInput("fromMesh: edge " + std::to_string(a) + "->" + std::to_string(b) +
+                             " is used twice in the same direction (faces " +
+                             std::to_string(owner.at(key(a, b))) + " and " + std::to_string(f) +
+                             "): inconsistent orientation or non-manifold edge");
+      }
+    }
+    std::size_t nE2 = 0;
+    for (int f = 0; f < nF; ++f) {
+      const Loop& L = faces[f];
+      for (std::size_t i = 0; i < L.size(); ++i) {
+        const int a = L[i], b = L[(i + 1) % L.size()];
+        if (!owner.count(key(b, a)))
+          throw InvalidInput("fromMesh: mesh is not closed: edge " + std::to_string(a) + "-" +
+                             std::to_string(b) + " of " + faceName(f) + " has no partner face");
+        ++nE2;
+      }
+    }
+    const long long nE = static_cast<long long>(nE2 / 2);
+    // Vertex fans must be single cycles (no two cones touching at a vertex).
+    {
+      std::vector<std::vector<std::pair<int, int>>> outEdges(nV);
+      for (int f = 0; f < nF; ++f) {
+        const Loop& L = faces[f];
+        const int m = static_cast<int>(L.size());
+        for (int i = 0; i < m; ++i) outEdges[L[i]].push_back({L[(i + 1) % m], L[(i + m - 1) % m]});
+      }
+      for (int v = 0; v < nV; ++v) {
+        if (outEdges[v].empty()) continue;
+        std::unordered_map<int, int> next;
+        for (const auto& wu : outEdges[v]) next[wu.first] = wu.second;
+        int w = outEdges[v][0].first;
+        std::size_t steps = 0;
+        do {
+          w = next.at(w);
+          ++steps;
+        } while (w != outEdges[v][0].first && steps <= outEdges[v].size());
+        if (steps != outEdges[v].size())
+          throw InvalidInput("fromMesh: vertex " + std::to_string(v) +
+                             " is non-manifold (its faces form more than one fan)");
+      }
+    }
+    // Connected.
+    {
+      std::vector<char> seen(nF, 0);
+      std::vector<int> queue{0};
+      seen[0] = 1;
+      for (std::size_t qi = 0; qi < queue.size(); ++qi) {
+        const Loop& L = faces[queue[qi]];
+        for (std::size_t i = 0; i < L.size(); ++i) {
+          const int nb = owner.at(key(L[(i + 1) % L.size()], L[i]));
+          if (!seen[nb]) {
+            seen[nb] = 1;
+            queue.push_back(nb);
+          }
+        }
+      }
+      if (static_cast<int>(queue.size()) != nF)
+        throw InvalidInput("fromMesh: mesh is not connected (" + std::to_string(nF - queue.size()) +
+                           " faces are not reachable from face 0)");
+    }
+    const long long chi = static_cast<long long>(usedPts.size()) - nE + nF;
+    if (chi != 2)
+      throw InvalidInput("fromMesh: mesh is not a topological sphere (Euler characteristic " +
+                         std::to_string(chi) + ", expected 2)");
+    // Planar, non-degenerate faces; outward orientation; local convexity.
+    std::vector<Vec3<T>> n(nF);
+    for (int f = 0; f < nF; ++f) {
+      const Loop& L = faces[f];
+      const Vec3<T> raw = newell(verts, L);
+      if (!(raw.squaredNorm() > T(0)))
+        throw InvalidInput("fromMesh: " + faceName(f) + " is degenerate (zero area)");
+      n[f] = testNormal(raw);
+      for (int v : L)
+        if (absValue(n[f].dot(verts[v] - verts[L[0]])) > tol)
+          throw InvalidInput("fromMesh: " + faceName(f) + " is not planar (vertex " + std::to_string(v) +
+                             " is off its plane)");
+    }
+    {
+      // Six times the signed volume, relative to a mesh vertex (exact for exact T).
+      const Vec3<T>& o = usedPts[0];
+      T vol6 = T(0);
+      for (const Loop& L : faces)
+        for (std::size_t i = 1; i + 1 < L.size(); ++i)
+          vol6 += (verts[L[0]] - o).dot((verts[L[i]] - o).cross(verts[L[i + 1]] - o));
+      if (!(vol6 > T(0)))
+        throw InvalidInput(
+            "fromMesh: faces are oriented inward (clockwise seen from outside) or the mesh has no volume");
+    }
+    // Local convexity at every vertex: each vertex adjacent to v lies on or below every
+    // face plane around v. With a closed connected surface this makes the mesh convex
+    // (van Heijenoort 1952).
+    {
+      std::vector<std::vector<int>> facesAt(nV), nbrs(nV);
+      for (int f = 0; f < nF; ++f) {
+        const Loop& L = faces[f];
+        const int m = static_cast<int>(L.size());
+        for (int i = 0; i < m; ++i) {
+          facesAt[L[i]].push_back(f);
+          nbrs[L[i]].push_back(L[(i + 1) % m]);
+        }
+      }
+      for (int v = 0; v < nV; ++v)
+        for (int f : facesAt[v])
+          for (int w : nbrs[v])
+            if (n[f].dot(verts[w] - verts[v]) > tol)
+              throw InvalidInput("fromMesh: mesh is not convex (vertex " + std::to_string(w) + " lies above " +
+                                 faceName(f) + ")");
+    }
+    return finish(verts, faces, tol, extent);
+  }
+};
+
+}  // namespace detail
+
+template <class T>
+ConvexPolyhedron<T> ConvexPolyhedron<T>::fromPoints(const std::vector<Vec3<T>>& points,
+                                                    const HullOptions<T>& options) {
+  return detail::PolyhedronBuilder<T>::fromPoints(points, options);
+}
+
+template <class T>
+ConvexPolyhedron<T> ConvexPolyhedron<T>::fromMesh(const std::vector<Vec3<T>>& vertices,
+                                                  const std::vector<std::vector<int>>& faces,
+                                                  const HullOptions<T>& options) {
+  return detail::PolyhedronBuilder<T>::fromMesh(vertices, faces, options);
+}
+
+template <class T>
+int ConvexPolyhedron<T>::support(const Vec3<T>& d, int hint) const {
+  int v = (hint >= 0 && hint < numVertices()) ? hint : 0;
+  T best = d.dot(vertices_[v]);
+  // Steepest ascent; values strictly increase, so no vertex repeats and it terminates.
+  for (;;) {
+    int next = -1;
+    for (int w : vertexNeighbors(v)) {
+      const T val = d.dot(vertices_[w]);
+      if (val > best) {
+        best = val;
+        next = w;
+      }
+    }
+    if (next < 0) return v;
+    v = next;
+  }
+}
+
+template <class T>
+int ConvexPolyhedron<T>::supportBruteForce(const Vec3<T>& d) const {
+  int arg = 0;
+  T best = d.dot(vertices_[0]);
+  for (int v = 1; v < numVertices(); ++v) {
+    const T val = d.dot(vertices_[v]);
+    if (val > best) {
+      best = val;
+      arg = v;
+    }
+  }
+  return arg;
+}
+
+}  // namespace mink

@@ -1,0 +1,281 @@
+// mink/polyhedron/detail/quickhull.hpp — the triangulated convex hull of a point set.
+//
+// Quickhull: C. B. Barber, D. P. Dobkin, H. Huhdanpaa, "The Quickhull Algorithm for
+// Convex Hulls", ACM TOMS 22(4), 1996.
+//   1. Start from a tetrahedron of extreme points (lexicographic minimum, the point
+//      farthest from it, the point farthest from their line, from their plane).
+//   2. Give every point to one face it lies strictly above (by more than `tol`).
+//   3. Take a face with points; its farthest point is the eye. Faces the eye is above
+//      form a disc (the visible set); its boundary is the horizon.
+//   4. Replace the visible faces by a cone of triangles from the eye to the horizon;
+//      hand the visible faces' points to the new faces (or drop them: inside).
+//   5. Repeat until no face has points.
+// Decisions are signs of n.(p - a) with n the (exact, for exact T) face normal; for
+// inexact T the normal is unit so `tol` is a distance. The result may contain coplanar
+// neighbouring triangles and non-corner vertices: the polyhedron builder merges them.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "mink/core/error.hpp"
+#include "mink/core/scalar_traits.hpp"
+#include "mink/core/types.hpp"
+
+namespace mink {
+namespace detail {
+
+template <class T>
+class Quickhull {
+ public:
+  /// Triangles (indices into `points`, counter-clockwise seen from outside).
+  static std::vector<std::array<int, 3>> run(const std::vector<Vec3<T>>& points, const T& tol) {
+    Quickhull q(points, tol);
+    q.buildSimplex();
+    q.expand();
+    return q.collect();
+  }
+
+ private:
+  struct Face {
+    std::array<int, 3> v;    // corners, CCW from outside
+    std::array<int, 3> nbr;  // face across edge v[i] -> v[i+1]
+    Vec3<T> n;               // outward normal (unit for inexact T)
+    std::vector<int> outside;
+    int eye = -1;  // farthest outside point
+    T eyeDist = T(0);
+    bool alive = true;
+    int visitMark = -1;
+  };
+
+  Quickhull(const std::vector<Vec3<T>>& p, const T& tol) : pts_(p), tol_(tol) {}
+
+  T dist(const Face& f, int i) const { return f.n.dot(pts_[i] - pts_[f.v[0]]); }
+
+  int makeFace(int a, int b, int c) {
+    Face f;
+    f.v = {a, b, c};
+    f.nbr = {-1, -1, -1};
+    f.n = (pts_[b] - pts_[a]).cross(pts_[c] - pts_[a]);
+    if constexpr (!ScalarTraits<T>::isExact) {
+      const T len = f.n.norm();
+      if (len > T(0)) f.n /= len;
+    }
+    faces_.push_back(std::move(f));
+    return static_cast<int>(faces_.size()) - 1;
+  }
+
+  void addOutside(int fi, int p, const T& d) {
+    Face& f = faces_[fi];
+    f.outside.push_back(p);
+    if (f.eye < 0 || d > f.eyeDist) {
+      f.eye = p;
+      f.eyeDist = d;
+    }
+  }
+
+  // Hands point p to the first of `candidates` it is strictly above; false if none.
+  bool assign(int p, const std::vector<int>& candidates) {
+    for (int fi : candidates) {
+      const T d = dist(faces_[fi], p);
+      if (d > tol_) {
+        addOutside(fi, p, d);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  void buildSimplex() {
+    const int n = static_cast<int>(pts_.size());
+    // Lexicographic minimum: always a corner of the hull.
+    int i0 = 0;
+    for (int i = 1; i < n; ++i) {
+      const auto& a = pts_[i];
+      const auto& b = pts_[i0];
+      if (a.x() < b.x() || (a.x() == b.x() && (a.y() < b.y() || (a.y() == b.y() && a.z() < b.z()))))
+        i0 = i;
+    }
+    // Farthest from it: the maximum of a strictly convex function is a corner.
+    int i1 = i0;
+    T best = T(0);
+    for (int i = 0; i < n; ++i) {
+      const T d = (pts_[i] - pts_[i0]).squaredNorm();
+      if (d > best) {
+        best = d;
+        i1 = i;
+      }
+    }
+    if (!(best > tol_ * tol_)) throw InvalidInput("fromPoints: all points coincide (within the tolerance)");
+    const Vec3<T> dir = pts_[i1] - pts_[i0];
+    int i2 = i0;
+    best = T(0);
+    for (int i = 0; i < n; ++i) {
+      const T d = (pts_[i] - pts_[i0]).cross(dir).squaredNorm();
+      if (d > best) {
+        best = d;
+        i2 = i;
+      }
+    }
+    // distance^2 to the line is d / |dir|^2
+    if (!(best > tol_ * tol_ * dir.squaredNorm()))
+      throw InvalidInput("fromPoints: all points are collinear (within the tolerance)");
+    const Vec3<T> nrm = dir.cross(pts_[i2] - pts_[i0]);
+    int i3 = i0;
+    best = T(0);
+    T bestSigned = T(0);
+    for (int i = 0; i < n; ++i) {
+      const T s = nrm.dot(pts_[i] - pts_[i0]);
+      const T d = absValue(s);
+      if (d > best) {
+        best = d;
+        bestSigned = s;
+        i3 = i;
+      }
+    }
+    if (!(best * best > tol_ * tol_ * nrm.squaredNorm()))
+      throw InvalidInput("fromPoints: all points are coplanar (within the tolerance)");
+    // Orient so that i3 lies below the plane of (i0, i1, i2).
+    if (bestSigned > T(0)) std::swap(i1, i2);
+    const int f0 = makeFace(i0, i1, i2);
+    const int f1 = makeFace(i0, i3, i1);
+    const int f2 = makeFace(i1, i3, i2);
+    const int f3 = makeFace(i2, i3, i0);
+    link(f0, 0, f1, 2);  // i0->i1 / i1->i0
+    link(f0, 1, f2, 2);  // i1->i2 / i2->i1
+    link(f0, 2, f3, 2);  // i2->i0 / i0->i2
+    link(f1, 0, f3, 1);  // i0->i3 / i3->i0
+    link(f1, 1, f2, 0);  // i3->i1 / i1->i3
+    link(f2, 1, f3, 0);  // i3->i2 / i2->i3
+    std::vector<int> all = {f0, f1, f2, f3};
+    for (int i = 0; i < n; ++i) {
+      if (i == i0 || i == i1 || i == i2 || i == i3) continue;
+      assign(i, all);
+    }
+  }
+
+  void link(int fa, int ea, int fb, int eb) {
+    faces_[fa].nbr[ea] = fb;
+    faces_[fb].nbr[eb] = fa;
+  }
+
+  void expand() {
+    std::vector<int> visible, newFaces, orphan;
+    struct Horizon {
+      int a, b, outsideFace, outsideEdge;
+    };
+    std::vector<Horizon> horizon;
+    int mark = 0;
+    for (std::size_t fi = 0; fi < faces_.size(); ++fi) {
+      while (faces_[fi].alive && !faces_[fi].outside.empty()) {
+        const int eye = faces_[fi].eye;
+        ++mark;
+        // Visible set and horizon by depth-first search; recording the horizon edges
+        // in the order the search meets them around the disc gives a closed loop.
+        visible.clear();
+        horizon.clear();
+        visitHorizon(static_cast<int>(fi), eye, mark, visible, horizon);
+        // Cone of new faces.
+        newFaces.clear();
+        const int h = static_cast<int>(horizon.size());
+        bool loopOk = h >= 3;
+        for (int k = 0; k < h && loopOk; ++k) loopOk = horizon[k].b == horizon[(k + 1) % h].a;
+        if (!loopOk) {
+          // Only reachable through rounding with inexact T: the visible set is not a
+          // disc. Treat the eye as inside (it is within rounding of the hull).
+          for (int vf : visible) faces_[vf].visitMark = -1;
+          Face& f = faces_[fi];
+          f.outside.erase(std::find(f.outside.begin(), f.outside.end(), eye));
+          refreshEye(static_cast<int>(fi));
+          continue;
+        }
+        for (int k = 0; k < h; ++k) {
+          const int nf = makeFace(horizon[k].a, horizon[k].b, eye);
+          faces_[nf].nbr[0] = horizon[k].outsideFace;
+          faces_[horizon[k].outsideFace].nbr[horizon[k].outsideEdge] = nf;
+          newFaces.push_back(nf);
+        }
+        for (int k = 0; k < h; ++k) {
+          // edge 1 is b -> eye, shared with the next face's edge 2 (eye -> a).
+          link(newFaces[k], 1, newFaces[(k + 1) % h], 2);
+        }
+        orphan.clear();
+        for (int vf : visible) {
+          Face& f = faces_[vf];
+          f.alive = false;
+          for (int p : f.outside)
+            if (p != eye) orphan.push_back(p);
+          std::vector<int>().swap(f.outside);
+        }
+        for (int p : orphan) assign(p, newFaces);
+      }
+    }
+  }
+
+  void refreshEye(int fi) {
+    Face& f = faces_[fi];
+    f.eye = -1;
+    for (int p : f.outside) {
+      const T d = dist(f, p);
+      if (f.eye < 0 || d > f.eyeDist) {
+        f.eye = p;
+        f.eyeDist = d;
+      }
+    }
+  }
+
+  // Depth-first search over the faces visible from `eye`. Each face entered through
+  // an edge examines its other edges in rotational order after that edge, so the
+  // horizon edges are emitted as one closed counter-clockwise loop.
+  template <class HorizonVec>
+  void visitHorizon(int start, int eye, int mark, std::vector<int>& visible, HorizonVec& horizon) {
+    std::vector<DfsFrame>& stack = dfs_;
+    stack.clear();
+    faces_[start].visitMark = mark;
+    visible.push_back(start);
+    stack.push_back({start, 0, 0, 3});
+    while (!stack.empty()) {
+      DfsFrame& fr = stack.back();
+      if (fr.count == fr.limit) {
+        stack.pop_back();
+        continue;
+      }
+      const int e = (fr.first + fr.count) % 3;
+      ++fr.count;
+      const int cur = fr.face;
+      const int nb = faces_[cur].nbr[e];
+      Face& nf = faces_[nb];
+      if (nf.visitMark == mark) continue;
+      int back = 0;
+      while (nf.nbr[back] != cur) ++back;
+      if (dist(nf, eye) > tol_) {
+        nf.visitMark = mark;
+        visible.push_back(nb);
+        stack.push_back({nb, (back + 1) % 3, 0, 2});
+      } else {
+        const Face& cf = faces_[cur];
+        horizon.push_back({cf.v[e], cf.v[(e + 1) % 3], nb, back});
+      }
+    }
+  }
+
+  std::vector<std::array<int, 3>> collect() const {
+    std::vector<std::array<int, 3>> out;
+    for (const Face& f : faces_)
+      if (f.alive) out.push_back(f.v);
+    return out;
+  }
+
+  const std::vector<Vec3<T>>& pts_;
+  T tol_;
+  std::vector<Face> faces_;
+  struct DfsFrame {
+    int face, first, count, limit;
+  };
+  std::vector<DfsFrame> dfs_;
+};
+
+}  // namespace detail
+}  // namespace mink
