@@ -30,5 +30,27 @@ constexpr int kHierarchyMaxRemovedDegree = 8;
 /// Unit: vertices. Safe range: 4 .. 64.
 constexpr int kHierarchyTopVertices = 16;
 
+/// Poses: a rotation R is accepted when every entry of R^T R - I is at most this (or
+/// 100 eps of the scalar, if larger) and det R > 0. Unit: none. Safe range: 1e-12 ..
+/// 1e-3. Exact scalars require R^T R == I exactly.
+constexpr double kRotationTolerance = 1e-6;
+
+/// MDD: |translation| at or below this many (unit roundoff) x (scene size) counts as
+/// Touching for inexact scalars; the scene size is extent(P) + extent(Q) + |t_rel|
+/// (t_rel: Q's position in P's frame). Unit: multiples of eps * scene size.
+/// Safe range: 16 .. 1e6. Exact scalars always use 0.
+constexpr double kMddTouchToleranceFactor = 256.0;
+
+/// MDD: the three phases of one search (one direction) evaluate at most this many times
+/// (faces(P) + faces(Q) + 64) candidate faces of M before reporting
+/// MddStatus::IterationLimit (the exhaustive check, when used, is bounded by its own
+/// faces(P) + faces(Q) + edges(P) * edges(Q)). Unit: multiple of the face counts.
+/// Safe range: >= 2 (the FV and VF walks evaluate each face at most once).
+constexpr long long kMddVisitFactor = 4;
+
+/// MDD: the 2-D portal refinement of the centre-of-duality step gives up after this many
+/// iterations times (vertices(P) + vertices(Q) + 16). Unit: multiple. Safe range: >= 1.
+constexpr long long kMddPortalFactor = 2;
+
 }  // namespace defaults
 }  // namespace mink

@@ -157,6 +157,9 @@ class ConvexPolyhedron {
   const T& tolerance() const { return tolerance_; }
   /// |x|max + |y|max + |z|max over the vertices (the scale tolerances are relative to).
   const T& extent() const { return extent_; }
+  /// The average of the vertices: a point strictly inside the polyhedron (exact for
+  /// exact T), made once at construction so queries never pay O(n) for one.
+  const Vec3<T>& interiorPoint() const { return interior_; }
 
   // ---- support (extreme vertex) ----
   /// A vertex maximising direction . x. Hill-climbs the vertex graph from `hint`:
@@ -187,6 +190,7 @@ class ConvexPolyhedron {
   std::vector<int> edgeHalfEdge_;
   T tolerance_ = T(0);
   T extent_ = T(0);
+  Vec3<T> interior_ = Vec3<T>::Zero();
   std::shared_ptr<detail::DerivedSlots> derived_;
 };
 

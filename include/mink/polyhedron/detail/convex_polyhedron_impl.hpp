@@ -288,6 +288,9 @@ struct PolyhedronBuilder {
     }
     P.tolerance_ = tol;
     P.extent_ = extent;
+    Vec3<T> sum = Vec3<T>::Zero();
+    for (const auto& x : P.vertices_) sum += x;
+    P.interior_ = sum / T(nV);
     return P;
   }
 

@@ -1,0 +1,193 @@
+// mink/mdd/centre_of_duality.hpp — Step 1 of MDD-DUAL (Choi et al., seed 000, section
+// IV-A): does the line {t s} meet M = P ⊕ −Q, and if so, a point c of it strictly
+// inside M.
+//
+// The paper projects both polyhedra along s and builds the 2-D Minkowski difference of
+// their silhouettes, O(n) per query. mink instead asks M's projection M' only for support
+// points (support of P and of −Q along directions orthogonal to s, from the hierarchies
+// or warm hill-climbs), with a 2-D portal refinement (Minkowski portal refinement,
+// Snethen 2008, cut down to the plane):
+//   1. v0: projection of x0 = interior(P) − interior(Q), a point strictly inside M'.
+//   2. Find a portal v1–v2 of support points whose cone from v0 holds the origin.
+//   3. Origin strictly on v0's side of the portal: inside M'. Lift its barycentric
+//      coordinates in (v0, v1, v2) to 3-D: c = λ0 x0 + λ1 X1 + λ2 X2 lies on the line and,
+//      as λ0 > 0 and x0 is interior, strictly inside M (the paper's tetrahedron trick
+//      serves the same end).
+//   4. Otherwise take the support point X3 along the portal's outer normal: if it is not
+//      beyond the origin, the origin is outside M' (case 1, NoContact) or on its boundary
+//      (case 2: the line only grazes M); else replace v1 or v2 by v3 and repeat.
+// Every decision is the sign of a polynomial in the inputs (no division), so the result
+// is exact for exact T; the number of steps is bounded by M' having finitely many
+// vertices, and capped by defaults::kMddPortalFactor for inexact T.
+#pragma once
+
+#include <utility>
+
+#include "mink/core/defaults.hpp"
+#include "mink/mdd/detail/contact_set.hpp"
+
+namespace mink {
+
+template <class T>
+struct CentreOfDuality {
+  enum class Kind { Interior, Boundary, Outside, Limit };
+  Kind kind = Kind::Outside;
+  /// Interior: a point of the line, strictly inside M (frame of P).
+  Vec3<T> c = Vec3<T>::Zero();
+  /// Boundary: a direction orthogonal to s whose supporting plane of M contains the line.
+  Vec3<T> w = Vec3<T>::Zero();
+};
+
+namespace detail {
+
+template <class T>
+using Pt2 = std::pair<T, T>;
+
+template <class T>
+T cross2(const Pt2<T>& a, const Pt2<T>& b) {
+  return a.first * b.second - a.second * b.first;
+}
+template <class T>
+Pt2<T> sub2(const Pt2<T>& a, const Pt2<T>& b) {
+  return {a.first - b.first, a.second - b.second};
+}
+template <class T>
+T dot2(const Pt2<T>& a, const Pt2<T>& b) {
+  return a.first * b.first + a.second * b.second;
+}
+
+}  // namespace detail
+
+/// Step 1 for direction s (frame of P). hintP / hintQ: support vertex hints (in and out).
+template <class T>
+CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>& s, int& hintP, int& hintQ) {
+  using detail::Pt2;
+  using Kind = typename CentreOfDuality<T>::Kind;
+  CentreOfDuality<T> out;
+  const auto basis = detail::orthogonalBasis(s);
+  const Vec3<T>& u1 = basis.first;
+  const Vec3<T>& u2 = basis.second;
+  auto proj = [&](const Vec3<T>& x) { return Pt2<T>(x.dot(u1), x.dot(u2)); };
+  auto lift = [&](const Pt2<T>& d) { return Vec3<T>(d.first * u1 + d.second * u2); };
+  // Support point of M along the 3-D direction of the 2-D direction d.
+  auto support = [&](const Pt2<T>& d) {
+    const Vec3<T> D = lift(d);
+    hintP = F.supportP(D, hintP);
+    hintQ = F.supportMinusQ(D, hintQ);
+    return Vec3<T>(F.P().vertex(hintP) - F.q(hintQ));
+  };
+  auto boundary = [&](const Pt2<T>& d) {
+    out.kind = Kind::Boundary;
+    out.w = lift(d);
+    return out;
+  };
+
+  const Vec3<T> x0 = F.P().interiorPoint() - (F.R() * F.Q().interiorPoint() + F.t());
+  const Pt2<T> v0 = proj(x0);
+  const Pt2<T> zero(T(0), T(0));
+  if (v0 == zero) {
+    out.kind = Kind::Interior;
+    out.c = x0;
+    return out;
+  }
+  const Pt2<T> r(-v0.first, -v0.second);  // from v0 towards the origin
+  Vec3<T> X1 = support(r);
+  Pt2<T> v1 = proj(X1);
+  {
+    const T h = detail::dot2(r, v1);  // support value; the origin's value is 0
+    if (h < T(0)) return out;         // Outside
+    if (h == T(0)) return boundary(r);
+  }
+  // Origin on the segment v0–v1: inside (v1 is in M', v0 interior).
+  const Pt2<T> d01 = detail::sub2(v1, v0);
+  const T side = detail::cross2(d01, r);
+  if (side == T(0)) {
+    // origin = v0 + λ (v1 − v0) with λ = |v0|² / (r·(v1 − v0)) in (0, 1)
+    const T lambda = detail::dot2(r, r) / detail::dot2(r, d01);
+    out.kind = Kind::Interior;
+    out.c = x0 + lambda * (X1 - x0);
+    return out;
+  }
+  // Second support point on the origin's side of line v0 v1; keep (v1, v2) counter-
+  // clockwise around v0.
+  Pt2<T> n = side > T(0) ? Pt2<T>(-d01.second, d01.first) : Pt2<T>(d01.second, -d01.first);
+  Vec3<T> X2 = support(n);
+  Pt2<T> v2 = proj(X2);
+  {
+    const T h = detail::dot2(n, v2);
+    if (h < T(0)) return out;
+    if (h == T(0)) return boundary(n);
+  }
+  if (side < T(0)) {
+    std::swap(v1, v2);
+    std::swap(X1, X2);
+  }
+  const long long cap =
+      defaults::kMddPortalFactor * (F.P().numVertices() + F.Q().numVertices() + 16);
+  for (long long it = 0; it < cap; ++it) {
+    // Keep the origin inside the cone (v0; v1, v2): rotate the portal until it is.
+    const T o1 = detail::cross2(detail::sub2(v1, v0), r);  // >= 0: origin left of v0->v1
+    const T o2 = detail::cross2(r, detail::sub2(v2, v0));  // >= 0: origin right of v0->v2
+    if (o1 < T(0)) {
+      // Origin clockwise of v1: new v1 from the outer normal of v0 -> v1 (right side).
+      const Pt2<T> d = detail::sub2(v1, v0);
+      const Pt2<T> nn(d.second, -d.first);
+      const Vec3<T> X = support(nn);
+      const Pt2<T> v = proj(X);
+      const T h = detail::dot2(nn, v);
+      if (h < T(0)) return out;
+      if (h == T(0)) return boundary(nn);
+      v2 = v1;
+      X2 = X1;
+      v1 = v;
+      X1 = X;
+      continue;
+    }
+    if (o2 < T(0)) {
+      const Pt2<T> d = detail::sub2(v2, v0);
+      const Pt2<T> nn(-d.second, d.first);
+      const Vec3<T> X = support(nn);
+      const Pt2<T> v = proj(X);
+      const T h = detail::dot2(nn, v);
+      if (h < T(0)) return out;
+      if (h == T(0)) return boundary(nn);
+      v1 = v2;
+      X1 = X2;
+      v2 = v;
+      X2 = X;
+      continue;
+    }
+    // Portal v1 -> v2, outer normal (away from v0).
+    const Pt2<T> e = detail::sub2(v2, v1);
+    const Pt2<T> np(e.second, -e.first);
+    const T originBeyond = -detail::dot2(np, v1);  // np·(0 − v1)
+    if (originBeyond < T(0)) {
+      // Strictly inside the triangle's portal side: barycentric lift.
+      const T A = detail::cross2(detail::sub2(v1, v0), detail::sub2(v2, v0));
+      const T l1 = detail::cross2(detail::sub2(zero, v0), detail::sub2(v2, v0)) / A;
+      const T l2 = detail::cross2(detail::sub2(v1, v0), detail::sub2(zero, v0)) / A;
+      out.kind = Kind::Interior;
+      out.c = (T(1) - l1 - l2) * x0 + l1 * X1 + l2 * X2;
+      return out;
+    }
+    const Vec3<T> X3 = support(np);
+    const Pt2<T> v3 = proj(X3);
+    const T h = detail::dot2(np, v3);
+    if (h < T(0)) return out;  // the whole of M' is short of the origin
+    // h == 0: the supporting line of M' along np passes through the origin (then, as
+    // the origin is not strictly inside, it is on M' only if on that edge or vertex).
+    if (h == T(0) || !(detail::dot2(np, detail::sub2(v3, v1)) > T(0))) return boundary(np);
+    // Replace the portal end on the same side of the ray v0 -> origin as v3.
+    if (detail::cross2(detail::sub2(v3, v0), r) >= T(0)) {
+      v1 = v3;
+      X1 = X3;
+    } else {
+      v2 = v3;
+      X2 = X3;
+    }
+  }
+  out.kind = Kind::Limit;
+  return out;
+}
+
+}  // namespace mink

@@ -1,0 +1,128 @@
+// mink/mdd/detail/contact_set.hpp — the facet of M in a given direction, as the
+// Minkowski difference of the support sets of P and Q, and two questions asked of it:
+// does the line of s cross it (the check of a search's answer, covering spans of faces
+// with one normal, section VI-C), and where does the line run inside it when the line
+// lies in its plane (the grazing case 2 of section IV-A).
+#pragma once
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "mink/mdd/detail/pair_frame.hpp"
+
+namespace mink {
+namespace detail {
+
+/// Vertices of X whose `value` is within `eps` of value(v0), v0 a maximiser: the face,
+/// edge or vertex of X supporting the direction (exactly for exact T, eps = 0).
+/// Breadth-first over the vertex graph: the support set is connected.
+template <class T, class Value>
+void supportSet(const ConvexPolyhedron<T>& X, int v0, const Value& value, const T& eps, EpochMarks& marks,
+                std::vector<int>& out) {
+  out.clear();
+  marks.reset(static_cast<std::size_t>(X.numVertices()));
+  marks.mark(v0);
+  out.push_back(v0);
+  const T floor = value(v0) - eps;
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (int w : X.vertexNeighbors(out[i]))
+      if (marks.mark(w) && !(value(w) < floor)) out.push_back(w);
+}
+
+/// 2-D orientation sign of (a, b, c).
+template <class T>
+int orient2(const std::pair<T, T>& a, const std::pair<T, T>& b, const std::pair<T, T>& c) {
+  return detail::sign((b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first));
+}
+
+/// Where the origin lies in the closed convex hull of 2-D points `pts` (ids carried
+/// along): false if outside; else up to three ids and non-negative weights summing to 1
+/// whose combination of the points is the origin (exact for exact T).
+template <class T>
+struct OriginLocation {
+  int count = 0;
+  int id[3] = {-1, -1, -1};
+  T weight[3] = {T(0), T(0), T(0)};
+};
+
+template <class T>
+bool locateOrigin2(std::vector<std::pair<std::pair<T, T>, int>>& pts, OriginLocation<T>& loc) {
+  using P2 = std::pair<T, T>;
+  std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  pts.erase(std::unique(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
+            pts.end());
+  const P2 o(T(0), T(0));
+  const std::size_t n = pts.size();
+  std::vector<std::pair<P2, int>> h(2 * n + 1);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    while (k >= 2 && orient2(h[k - 2].first, h[k - 1].first, pts[i].first) <= 0) --k;
+    h[k++] = pts[i];
+  }
+  for (std::size_t i = n - 1, lo = k + 1; i-- > 0;) {
+    while (k >= lo && orient2(h[k - 2].first, h[k - 1].first, pts[i].first) <= 0) --k;
+    h[k++] = pts[i];
+  }
+  if (k > 1) --k;  // last equals first
+  h.resize(k);
+  auto onSegment = [&](const std::pair<P2, int>& a, const std::pair<P2, int>& b) {
+    if (orient2(a.first, b.first, o) != 0) return false;
+    const T dx = b.first.first - a.first.first, dy = b.first.second - a.first.second;
+    const T len2 = dx * dx + dy * dy;
+    const T dot = -a.first.first * dx - a.first.second * dy;
+    if (dot < T(0) || dot > len2) return false;
+    if (len2 == T(0)) {
+      if (!(a.first == o)) return false;
+      loc.count = 1;
+      loc.id[0] = a.second;
+      loc.weight[0] = T(1);
+      return true;
+    }
+    const T l = dot / len2;
+    loc.count = 2;
+    loc.id[0] = a.second;
+    loc.id[1] = b.second;
+    loc.weight[0] = T(1) - l;
+    loc.weight[1] = l;
+    return true;
+  };
+  if (h.size() == 1) return onSegment(h[0], h[0]);
+  if (h.size() == 2) return onSegment(h[0], h[1]);
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (orient2(h[i].first, h[(i + 1) % h.size()].first, o) < 0) return false;
+  // Inside the convex polygon: find the fan triangle (h0, hi, hi+1) holding the origin.
+  for (std::size_t i = 1; i + 1 < h.size(); ++i) {
+    const P2& a = h[0].first;
+    const P2& b = h[i].first;
+    const P2& c = h[i + 1].first;
+    if (orient2(a, b, o) < 0 || orient2(b, c, o) < 0 || orient2(c, a, o) < 0) continue;
+    const T A = (b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first);
+    const T wb = ((o.first - a.first) * (c.second - a.second) - (o.second - a.second) * (c.first - a.first)) / A;
+    const T wc = ((b.first - a.first) * (o.second - a.second) - (b.second - a.second) * (o.first - a.first)) / A;
+    loc.count = 3;
+    loc.id[0] = h[0].second;
+    loc.id[1] = h[i].second;
+    loc.id[2] = h[i + 1].second;
+    loc.weight[0] = T(1) - wb - wc;
+    loc.weight[1] = wb;
+    loc.weight[2] = wc;
+    return true;
+  }
+  return false;
+}
+
+/// Basis (u1, u2) of the plane orthogonal to s, exact for exact T (not unit).
+template <class T>
+std::pair<Vec3<T>, Vec3<T>> orthogonalBasis(const Vec3<T>& s) {
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+    if (absValue(s[i]) < absValue(s[k])) k = i;
+  Vec3<T> e = Vec3<T>::Zero();
+  e[k] = T(1);
+  const Vec3<T> u1 = s.cross(e);
+  return {u1, s.cross(u1)};
+}
+
+}  // namespace detail
+}  // namespace mink

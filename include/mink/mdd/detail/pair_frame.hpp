@@ -1,0 +1,148 @@
+// mink/mdd/detail/pair_frame.hpp — a pair (P, Q) seen in P's frame, and the faces of
+// M = P ⊕ −Q built on demand from it (MDD paper section II-C).
+//
+// Everything is computed in P's own frame: Q's vertices and normals are mapped by the
+// relative pose (R, t) when needed, so no shape is copied or rebuilt per query. A face of
+// M is a plane N·x = k with outward N (never normalised here) and k = h_P(N) + h_{−Q}(N):
+//   FV (f_p, v_q): N = n(f_p),            k = offset(f_p) − N·q(v_q),  v_q = argmin N·q
+//   VF (v_p, f_q): N = −R n(f_q),         k = N·p(v_p) + R n(f_q)·q(f_q), v_p = argmax N·p
+//   EE (e_p, e_q): N = ±(e_p × e_q), the sign that points where the arcs of G(P) and
+//                  G(−Q) cross, k = N·(p_0 − q_0).
+// For the search with centre of duality c (strictly inside M) and direction σ, the dual
+// point of a face is N / (k − N·c); its height along σ, (N·σ)/(k − N·c), is the linear
+// function the search maximises; comparisons cross-multiply (denominators are > 0).
+#pragma once
+
+#include <utility>
+
+#include "mink/gauss_map/arc_intersection.hpp"
+#include "mink/hierarchy/dk_hierarchy.hpp"
+#include "mink/mdd/mdd_types.hpp"
+#include "mink/polyhedron/convex_polyhedron.hpp"
+
+namespace mink {
+namespace detail {
+
+template <class T>
+struct MFace {
+  MddFaceType type = MddFaceType::None;
+  int a = -1;  // FV: face of P; VF: vertex of P; EE: edge of P
+  int b = -1;  // FV: vertex of Q; VF: face of Q; EE: edge of Q
+  Vec3<T> N = Vec3<T>::Zero();
+  T k = T(0);
+  bool valid() const { return type != MddFaceType::None; }
+};
+
+template <class T>
+class PairFrame {
+ public:
+  PairFrame(const ConvexPolyhedron<T>& P, const ConvexPolyhedron<T>& Q, const Mat3<T>& R,
+            const Vec3<T>& t, bool useHierarchy)
+      : P_(P), Q_(Q), R_(R), t_(t), useHierarchy_(useHierarchy) {}
+
+  const ConvexPolyhedron<T>& P() const { return P_; }
+  const ConvexPolyhedron<T>& Q() const { return Q_; }
+  const Mat3<T>& R() const { return R_; }
+  const Vec3<T>& t() const { return t_; }
+
+  Vec3<T> q(int j) const { return R_ * Q_.vertex(j) + t_; }
+  /// Outward normal of Q's face f in P's frame.
+  Vec3<T> qNormal(int f) const { return R_ * Q_.faceNormal(f); }
+  /// Offset of Q's face f in P's frame: qNormal(f)·x == qOffset(f) on it.
+  T qOffset(int f) const { return Q_.faceOffset(f) + qNormal(f).dot(t_); }
+
+  /// argmax d·p over P's vertices (hint < 0: cold query, hierarchy if worth it).
+  int supportP(const Vec3<T>& d, int hint) const {
+    if (hint >= 0 || !useHierarchy_) return P_.support(d, hint < 0 ? 0 : hint);
+    return extremeVertex(P_, d);
+  }
+  /// argmin d·q over Q's vertices (in P's frame), i.e. the support of −Q along d.
+  int supportMinusQ(const Vec3<T>& d, int hint) const {
+    const Vec3<T> dl = -(R_.transpose() * d);
+    if (hint >= 0 || !useHierarchy_) return Q_.support(dl, hint < 0 ? 0 : hint);
+    return extremeVertex(Q_, dl);
+  }
+
+  MFace<T> fv(int fp, int& hintQ) const {
+    MFace<T> m;
+    m.type = MddFaceType::FV;
+    m.a = fp;
+    m.N = P_.faceNormal(fp);
+    m.b = hintQ = supportMinusQ(m.N, hintQ);
+    m.k = P_.faceOffset(fp) - m.N.dot(q(m.b));
+    return m;
+  }
+
+  MFace<T> vf(int fq, int& hintP) const {
+    MFace<T> m;
+    m.type = MddFaceType::VF;
+    m.b = fq;
+    const Vec3<T> nq = qNormal(fq);
+    m.N = -nq;
+    m.a = hintP = supportP(m.N, hintP);
+    m.k = m.N.dot(P_.vertex(m.a)) + Q_.faceOffset(fq) + nq.dot(t_);
+    return m;
+  }
+
+  /// The EE face of edges ep (of P) and eq (of Q) if their arcs on G(P) and G(−Q) cross
+  /// properly; otherwise an invalid face. `degenerateToo` also accepts touching arcs
+  /// (then the plane through the edges is still a supporting plane of M when valid,
+  /// which the caller must check by support queries — see exhaustive search).
+  MFace<T> ee(int ep, int eq) const {
+    MFace<T> m;
+    const auto fp = P_.edgeFaces(ep);
+    const auto fq = Q_.edgeFaces(eq);
+    const Vec3<T>& a = P_.faceNormal(fp.first);
+    const Vec3<T>& b = P_.faceNormal(fp.second);
+    const Vec3<T> c = qNormal(fq.first);
+    const Vec3<T> d = qNormal(fq.second);
+    const ArcVolumes<T> vol = arcVolumes(a, b, c, d).negatedSecondArc();
+    if (classifyArcs(vol) != ArcIntersection::Proper) return m;
+    const auto vp = P_.edgeVertices(ep);
+    const auto vq = Q_.edgeVertices(eq);
+    const Vec3<T> p0 = P_.vertex(vp.first);
+    const Vec3<T> q0 = q(vq.first);
+    Vec3<T> N = (P_.vertex(vp.second) - p0).cross(q(vq.second) - q0);
+    // The crossing direction is a positive combination of a and b (arc_intersection.hpp).
+    const Vec3<T> dir = arcIntersectionDirection(a, b, vol);
+    const T orient = N.dot(dir);
+    if (orient == T(0)) return m;
+    if (orient < T(0)) N = -N;
+    m.type = MddFaceType::EE;
+    m.a = ep;
+    m.b = eq;
+    m.N = N;
+    m.k = N.dot(p0 - q0);
+    return m;
+  }
+
+ private:
+  const ConvexPolyhedron<T>& P_;
+  const ConvexPolyhedron<T>& Q_;
+  Mat3<T> R_;
+  Vec3<T> t_;
+  bool useHierarchy_;
+};
+
+/// The search's objective: face f is better than g along σ for centre c when
+/// (N_f·σ)/(k_f − N_f·c) > (N_g·σ)/(k_g − N_g·c).
+/// Collision mode (section V): with `earlyExit`, any face with k < 0 — a supporting plane
+/// of M with the origin strictly outside — proves separation and stops the search.
+template <class T>
+struct RayObjective {
+  Vec3<T> sigma;
+  Vec3<T> c;
+  bool earlyExit = false;
+  mutable bool separated = false;
+  T num(const MFace<T>& f) const { return f.N.dot(sigma); }
+  T den(const MFace<T>& f) const { return f.k - f.N.dot(c); }
+  bool better(const MFace<T>& f, const MFace<T>& g) const {
+    if (earlyExit && f.valid() && f.k < T(0)) separated = true;
+    if (!g.valid()) return f.valid();
+    if (!f.valid()) return false;
+    return num(f) * den(g) > num(g) * den(f);
+  }
+};
+
+}  // namespace detail
+}  // namespace mink

@@ -1,0 +1,451 @@
+// mink/mdd/mdd.hpp — minimum directional distance between two convex polyhedra:
+// MDD-DUAL (Y.-K. Choi, X. Li, F. Rong, W. Wang, S. Cameron, "Computing the Minimum
+// Directional Distance between Two Convex Polyhedra", seed 000).
+//
+//   1. Centre of duality (section IV-A, centre_of_duality.hpp): the line {t s} misses
+//      M = P ⊕ −Q (NoContact), grazes it (case 2: the interval is read off the facet of M
+//      containing the line), or a point c = α s strictly inside M is found.
+//   2. From c, towards the origin first: SEARCH-FV, SEARCH-VF, SEARCH-EE (section IV-B)
+//      find the face of M the ray c + u σ leaves through (σ = ±s): the maximum of the
+//      linear function σ·N/(k − N·c) over the dual polytope M* (section III-B, Lemma 1).
+//   3. The answer is checked: the line must cross the facet of M in that face's plane
+//      (the Minkowski difference of the support sets of P and Q, which also covers spans
+//      of faces with one normal, section VI-C); if not, every FV, VF and EE face is
+//      examined (never seen on the paper's shapes; counted in MddResult::usedFallback).
+//   4. If the origin is inside M, the other direction is searched too (d_min, section
+//      III-C) and the nearer exit is reported.
+// The line parameter of a face is t = k / (N·s): all decisions are signs of polynomials
+// in the inputs, so with an exact rational T the result is exact.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "mink/core/defaults.hpp"
+#include "mink/mdd/centre_of_duality.hpp"
+#include "mink/mdd/detail/contact_set.hpp"
+#include "mink/mdd/search_ee.hpp"
+#include "mink/mdd/search_fv.hpp"
+
+namespace mink {
+namespace detail {
+
+template <class T>
+void checkPose(const Pose<T>& pose, const char* name) {
+  for (int i = 0; i < 3; ++i) {
+    if (!ScalarTraits<T>::isFinite(pose.translation[i]))
+      throw InvalidInput(std::string("mdd: ") + name + ".translation is not finite");
+    for (int j = 0; j < 3; ++j)
+      if (!ScalarTraits<T>::isFinite(pose.rotation(i, j)))
+        throw InvalidInput(std::string("mdd: ") + name + ".rotation is not finite");
+  }
+  const Mat3<T> E = pose.rotation.transpose() * pose.rotation - Mat3<T>::Identity();
+  T tol = T(0);
+  if constexpr (!ScalarTraits<T>::isExact)
+    tol = std::max(T(defaults::kRotationTolerance), T(100) * ScalarTraits<T>::epsilon());
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (absValue(E(i, j)) > tol)
+        throw InvalidInput(std::string("mdd: ") + name + ".rotation is not orthonormal");
+  if (!(pose.rotation.determinant() > T(0)))
+    throw InvalidInput(std::string("mdd: ") + name + ".rotation is a reflection (determinant < 0)");
+}
+
+template <class T>
+class MddQuery {
+ public:
+  MddQuery(const PairFrame<T>& F, const Vec3<T>& s, MddCache& cache, const MddOptions<T>& opt, MddResult<T>& res)
+      : F_(F), s_(s), cache_(cache), res_(res) {
+    const ConvexPolyhedron<T>& P = F.P();
+    const ConvexPolyhedron<T>& Q = F.Q();
+    if constexpr (ScalarTraits<T>::isExact) {
+      tol_ = T(0);
+    } else {
+      const T scene = P.extent() + Q.extent() + F.t().template lpNorm<1>();
+      tol_ = opt.touchTolerance >= T(0)
+                 ? opt.touchTolerance
+                 : T(defaults::kMddTouchToleranceFactor) * ScalarTraits<T>::epsilon() * scene;
+    }
+    const long long faces = P.numFaces() + Q.numFaces() + 64;
+    cap_ = opt.maxVisits >= 0 ? opt.maxVisits : defaults::kMddVisitFactor * faces;
+    const auto b = orthogonalBasis(s);
+    u1_ = b.first;
+    u2_ = b.second;
+  }
+
+  /// The face of M through which the ray c + u σ (u > 0) leaves M. Invalid on a cap.
+  /// With `earlyExit` (collision mode), stops with an invalid face and `separated` set as
+  /// soon as a face proves the origin outside M.
+  MFace<T> exitFace(const Vec3<T>& sigma, const Vec3<T>& c, bool earlyExit = false, bool* separated = nullptr) {
+    const ConvexPolyhedron<T>& P = F_.P();
+    const ConvexPolyhedron<T>& Q = F_.Q();
+    RayObjective<T> obj{sigma, c};
+    obj.earlyExit = earlyExit;
+    auto stopped = [&]() {
+      if (!obj.separated) return false;
+      if (separated) *separated = true;
+      return true;
+    };
+    SearchBudget budget{cap_, false};
+    int& hintP = cache_.vertexP;
+    int& hintQ = cache_.vertexQ;
+    // Initial face (section VI-A): around P's support vertex along σ, or the cached one.
+    int f0 = cache_.faceP;
+    if (f0 < 0 || f0 >= P.numFaces()) {
+      hintP = F_.supportP(sigma, hintP);
+      f0 = P.vertexFaces(hintP)[0];
+    }
+    const MFace<T> fv = searchFV(F_, obj, f0, hintQ, cache_.marksP, budget, res_.visitedFV);
+    if (stopped()) return MFace<T>();
+    const int g0 = Q.vertexFaces(fv.b)[0];
+    const MFace<T> vf = searchVF(F_, obj, g0, hintP, cache_.marksQ, budget, res_.visitedVF);
+    if (stopped()) return MFace<T>();
+    const MFace<T>& start = obj.better(vf, fv) ? vf : fv;
+    MFace<T> best = searchEE(F_, obj, start, cache_.marksEE, cache_.edgesP, cache_.edgesQ, budget,
+                             res_.visitedEE);
+    if (stopped() || budget.exhausted) return MFace<T>();
+    if (!(obj.num(best) > T(0)) || !facetHit(best)) {
+      res_.usedFallback = true;
+      best = exhaustive(obj);
+      if (stopped() || !best.valid() || !facetHit(best)) return MFace<T>();
+    }
+    cache_.faceP = best.type == MddFaceType::FV ? best.a : fv.a;
+    return best;
+  }
+
+  /// Every FV, VF and EE face of M (each facet of M is one of them: its support sets are
+  /// a face of P, a face of Q, or two non-parallel edges whose arcs cross properly).
+  MFace<T> exhaustive(const RayObjective<T>& obj) {
+    const ConvexPolyhedron<T>& P = F_.P();
+    const ConvexPolyhedron<T>& Q = F_.Q();
+    MFace<T> best;
+    int hq = cache_.vertexQ, hp = cache_.vertexP;
+    for (int f = 0; f < P.numFaces(); ++f) {
+      const MFace<T> m = F_.fv(f, hq);
+      ++res_.visitedFV;
+      if (obj.num(m) > T(0) && obj.better(m, best)) best = m;
+    }
+    for (int f = 0; f < Q.numFaces(); ++f) {
+      const MFace<T> m = F_.vf(f, hp);
+      ++res_.visitedVF;
+      if (obj.num(m) > T(0) && obj.better(m, best)) best = m;
+    }
+    for (int ep = 0; ep < P.numEdges(); ++ep)
+      for (int eq = 0; eq < Q.numEdges(); ++eq) {
+        const MFace<T> m = F_.ee(ep, eq);
+        if (!m.valid()) continue;
+        ++res_.visitedEE;
+        if (obj.num(m) > T(0) && obj.better(m, best)) best = m;
+      }
+    return best;
+  }
+
+  /// Does the line {t s} cross the facet of M in face m's plane? Fills the witnesses
+  /// (frame of P) when it does.
+  bool facetHit(const MFace<T>& m) {
+    const ConvexPolyhedron<T>& P = F_.P();
+    const ConvexPolyhedron<T>& Q = F_.Q();
+    int vp = 0, vq = 0;
+    switch (m.type) {
+      case MddFaceType::FV:
+        vp = P.faceVertices(m.a)[0];
+        vq = m.b;
+        break;
+      case MddFaceType::VF:
+        vp = m.a;
+        vq = Q.faceVertices(m.b)[0];
+        break;
+      case MddFaceType::EE:
+        vp = P.edgeVertices(m.a).first;
+        vq = Q.edgeVertices(m.b).first;
+        break;
+      default:
+        return false;
+    }
+    const Vec3<T>& N = m.N;
+    T eps = T(0);
+    if constexpr (!ScalarTraits<T>::isExact) eps = tol_ * N.norm();
+    supportSet(P, vp, [&](int v) { return T(N.dot(P.vertex(v))); }, eps, cache_.marksP, setP_);
+    supportSet(Q, vq, [&](int v) { return T(-N.dot(F_.q(v))); }, eps, cache_.marksQ, setQ_);
+    pts_.clear();
+    for (std::size_t i = 0; i < setP_.size(); ++i)
+      for (std::size_t j = 0; j < setQ_.size(); ++j) {
+        const Vec3<T> y = P.vertex(setP_[i]) - F_.q(setQ_[j]);
+        pts_.push_back({{y.dot(u1_), y.dot(u2_)}, static_cast<int>(i * setQ_.size() + j)});
+      }
+    OriginLocation<T> loc;
+    if (!locateOrigin2(pts_, loc)) return false;
+    wP_ = Vec3<T>::Zero();
+    wQ_ = Vec3<T>::Zero();
+    for (int i = 0; i < loc.count; ++i) {
+      const int ip = loc.id[i] / static_cast<int>(setQ_.size());
+      const int iq = loc.id[i] % static_cast<int>(setQ_.size());
+      wP_ += loc.weight[i] * P.vertex(setP_[ip]);
+      wQ_ += loc.weight[i] * F_.q(setQ_[iq]);
+    }
+    return true;
+  }
+
+  /// Grazing (case 2): the plane w·x = 0 supports M and holds the line. The line meets
+  /// M in [tlo, thi] (parameters of s) iff it meets the facet F_P(w) − F_Q(w).
+  bool grazing(const Vec3<T>& w, T& tlo, T& thi, int& vp, int& vq) {
+    const ConvexPolyhedron<T>& P = F_.P();
+    const ConvexPolyhedron<T>& Q = F_.Q();
+    vp = F_.supportP(w, cache_.vertexP);
+    vq = F_.supportMinusQ(w, cache_.vertexQ);
+    T eps = T(0);
+    if constexpr (!ScalarTraits<T>::isExact) eps = tol_ * w.norm();
+    supportSet(P, vp, [&](int v) { return T(w.dot(P.vertex(v))); }, eps, cache_.marksP, setP_);
+    supportSet(Q, vq, [&](int v) { return T(-w.dot(F_.q(v))); }, eps, cache_.marksQ, setQ_);
+    // In the plane: coordinate a along s, b along e = w × s; the line is b == 0.
+    const Vec3<T> e = w.cross(s_);
+    ab_.clear();
+    for (int ip : setP_)
+      for (int iq : setQ_) {
+        const Vec3<T> y = P.vertex(ip) - F_.q(iq);
+        ab_.push_back({y.dot(s_), y.dot(e)});
+      }
+    bool any = false;
+    T amin = T(0), amax = T(0);
+    auto take = [&](const T& a) {
+      if (!any || a < amin) amin = a;
+      if (!any || a > amax) amax = a;
+      any = true;
+    };
+    for (std::size_t i = 0; i < ab_.size(); ++i) {
+      if (ab_[i].second == T(0)) take(ab_[i].first);
+      for (std::size_t j = 0; j < ab_.size(); ++j) {
+        const T bi = ab_[i].second, bj = ab_[j].second;
+        if (bi < T(0) && bj > T(0))
+          take((ab_[i].first * bj - ab_[j].first * bi) / (bj - bi));
+      }
+    }
+    if (!any) return false;
+    const T ss = s_.squaredNorm();
+    tlo = amin / ss;
+    thi = amax / ss;
+    return true;
+  }
+
+  const Vec3<T>& witnessP() const { return wP_; }
+  const Vec3<T>& witnessQ() const { return wQ_; }
+  const T& tolerance() const { return tol_; }
+
+ private:
+  const PairFrame<T>& F_;
+  Vec3<T> s_;
+  MddCache& cache_;
+  MddResult<T>& res_;
+  T tol_;
+  long long cap_;
+  Vec3<T> u1_, u2_;
+  Vec3<T> wP_ = Vec3<T>::Zero(), wQ_ = Vec3<T>::Zero();
+  std::vector<int> setP_, setQ_;
+  std::vector<std::pair<std::pair<T, T>, int>> pts_;
+  std::vector<std::pair<T, T>> ab_;
+};
+
+/// |s| for reporting. Exact T has no sqrt: exact when |s|^2 == 1, otherwise a Newton
+/// iterate accurate far beyond double precision (reported values only, never decisions).
+template <class T>
+T lengthOf(const Vec3<T>& s) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    const T n2 = s.squaredNorm();
+    if (n2 == T(1)) return T(1);
+    T x = std::max({absValue(s[0]), absValue(s[1]), absValue(s[2])});
+    for (int i = 0; i < 5; ++i) x = (x + n2 / x) / T(2);
+    return x;
+  } else {
+    return s.norm();
+  }
+}
+
+template <class T>
+Vec3<T> unitOrExact(const Vec3<T>& n) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    return n;
+  } else {
+    const T len = n.norm();
+    return len > T(0) ? Vec3<T>(n / len) : n;
+  }
+}
+
+}  // namespace detail
+
+/// Minimum directional distance between P (placed by poseP) and Q (placed by poseQ)
+/// along s (world frame, any non-zero length), per DESIGN.md: see MddResult for the
+/// meaning, unit, frame and sign of every output. Throws InvalidInput for a zero or
+/// non-finite s or a non-finite / non-orthonormal pose; never throws otherwise.
+/// `cache` (optional) carries frame coherence between queries of the same pair.
+template <class T>
+MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                 const Pose<T>& poseQ, const Vec3<T>& s, MddCache& cache, const MddOptions<T>& options = {}) {
+  for (int i = 0; i < 3; ++i)
+    if (!ScalarTraits<T>::isFinite(s[i])) throw InvalidInput("mdd: direction s is not finite");
+  if (s == Vec3<T>::Zero()) throw InvalidInput("mdd: direction s is zero");
+  detail::checkPose(poseP, "poseP");
+  detail::checkPose(poseQ, "poseQ");
+  if (cache.shapeP != &P || cache.shapeQ != &Q) {
+    cache.faceP = cache.vertexP = cache.vertexQ = -1;
+    cache.shapeP = &P;
+    cache.shapeQ = &Q;
+  }
+  const Mat3<T> RPt = poseP.rotation.transpose();
+  const Mat3<T> R = RPt * poseQ.rotation;
+  const Vec3<T> t = RPt * (poseQ.translation - poseP.translation);
+  const Vec3<T> sl = RPt * s;
+  detail::PairFrame<T> F(P, Q, R, t, options.useHierarchy);
+  MddResult<T> res;
+  detail::MddQuery<T> query(F, sl, cache, options, res);
+  const T slen = detail::lengthOf(s);
+  auto toWorld = [&](const Vec3<T>& x) { return Vec3<T>(poseP.rotation * x + poseP.translation); };
+  auto noContact = [&]() {
+    res.status = MddStatus::NoContact;
+    res.faceType = MddFaceType::None;
+    if constexpr (std::numeric_limits<T>::has_infinity) {
+      res.distance = res.translation = res.parameter = std::numeric_limits<T>::infinity();
+    }
+    return res;
+  };
+  auto finish = [&](const T& param) {
+    res.parameter = param;
+    res.translation = param * slen;
+    if (detail::absValue(res.translation) <= query.tolerance()) {
+      res.status = MddStatus::Touching;
+      res.distance = T(0);
+    } else if (res.status != MddStatus::Penetrating) {
+      res.status = MddStatus::Separated;
+      res.distance = detail::absValue(res.translation);
+    } else {
+      res.distance = -detail::absValue(res.translation);
+    }
+    return res;
+  };
+
+  int hp = cache.vertexP, hq = cache.vertexQ;
+  const CentreOfDuality<T> cd = centreOfDuality(F, sl, hp, hq);
+  cache.vertexP = hp;
+  cache.vertexQ = hq;
+  using Kind = typename CentreOfDuality<T>::Kind;
+  if (cd.kind == Kind::Outside) return noContact();
+  if (cd.kind == Kind::Limit) {
+    res.status = MddStatus::IterationLimit;
+    return res;
+  }
+  if (cd.kind == Kind::Boundary) {
+    T tlo, thi;
+    int vp, vq;
+    if (!query.grazing(cd.w, tlo, thi, vp, vq)) return noContact();
+    res.faceType = MddFaceType::Grazing;
+    res.featureP = vp;
+    res.featureQ = vq;
+    res.normal = RPt.transpose() * detail::unitOrExact(cd.w);
+    const T param = (tlo <= T(0) && thi >= T(0)) ? T(0) : (tlo > T(0) ? tlo : thi);
+    // Witnesses: the contact is on the facet; report the support vertices' pair moved
+    // onto the line (exact contact points need the segment, which a caller rarely uses).
+    res.witnessP = toWorld(P.vertex(vp));
+    res.witnessQ = res.witnessP - param * s;
+    res.status = MddStatus::Separated;
+    return finish(param);
+  }
+  // Interior: c = alpha * s strictly inside M.
+  const Vec3<T>& c = cd.c;
+  const T alphaNum = c.dot(sl);  // sign of alpha
+  auto param = [&](const detail::MFace<T>& f) { return T(f.k / f.N.dot(sl)); };
+  auto record = [&](const detail::MFace<T>& f) {
+    res.faceType = f.type;
+    res.featureP = f.a;
+    res.featureQ = f.b;
+    res.normal = poseP.rotation * detail::unitOrExact(f.N);
+    res.witnessP = toWorld(query.witnessP());
+    res.witnessQ = toWorld(query.witnessQ());
+  };
+  // Towards the origin first: it decides separated (the exit is the answer) or not.
+  const Vec3<T> first = alphaNum > T(0) ? Vec3<T>(-sl) : Vec3<T>(sl);
+  const detail::MFace<T> f1 = query.exitFace(first, c);
+  if (!f1.valid()) {
+    res.status = MddStatus::IterationLimit;
+    return res;
+  }
+  const T t1 = param(f1);
+  record(f1);
+  const bool originInside = alphaNum > T(0) ? t1 < T(0) : (alphaNum < T(0) ? t1 > T(0) : true);
+  if (!originInside) {
+    res.status = MddStatus::Separated;
+    return finish(t1);
+  }
+  // Penetrating (or touching): the exit the other way, then the nearer one (d_min).
+  const detail::MFace<T> f2 = query.exitFace(Vec3<T>(-first), c);
+  if (!f2.valid()) {
+    res.status = MddStatus::IterationLimit;
+    return res;
+  }
+  const T t2 = param(f2);
+  res.status = MddStatus::Penetrating;
+  // Tie: the exit along +s is reported.
+  const bool takeSecond = detail::absValue(t2) < detail::absValue(t1) ||
+                          (detail::absValue(t2) == detail::absValue(t1) && t2 > t1);
+  if (takeSecond) {
+    record(f2);
+    return finish(t2);
+  }
+  // f1's witnesses were overwritten by the second facet check: recompute them.
+  query.facetHit(f1);
+  record(f1);
+  return finish(t1);
+}
+
+/// mdd() without a coherence cache (allocates its small work buffers per call).
+template <class T>
+MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                 const Pose<T>& poseQ, const Vec3<T>& s, const MddOptions<T>& options = {}) {
+  MddCache cache;
+  return mdd(P, poseP, Q, poseQ, s, cache, options);
+}
+
+/// Collision mode (section V): do P and Q (closed sets) share a point? Touching counts.
+/// The centre of duality is any interior point of M: interior(P) − interior(Q); the
+/// search towards the origin stops at the first face with the origin strictly outside.
+/// Throws InvalidInput for non-finite / non-orthonormal poses. Should a search ever hit
+/// its cap, the answer is `true` (the conservative one for collision detection).
+template <class T>
+bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                const Pose<T>& poseQ, MddCache& cache) {
+  detail::checkPose(poseP, "poseP");
+  detail::checkPose(poseQ, "poseQ");
+  if (cache.shapeP != &P || cache.shapeQ != &Q) {
+    cache.faceP = cache.vertexP = cache.vertexQ = -1;
+    cache.shapeP = &P;
+    cache.shapeQ = &Q;
+  }
+  const Mat3<T> RPt = poseP.rotation.transpose();
+  const Mat3<T> R = RPt * poseQ.rotation;
+  const Vec3<T> t = RPt * (poseQ.translation - poseP.translation);
+  detail::PairFrame<T> F(P, Q, R, t, true);
+  const Vec3<T> x0 = P.interiorPoint() - (R * Q.interiorPoint() + t);
+  if (x0 == Vec3<T>::Zero()) return true;
+  MddResult<T> res;
+  MddOptions<T> options;
+  detail::MddQuery<T> query(F, x0, cache, options, res);
+  bool separated = false;
+  const detail::MFace<T> f = query.exitFace(Vec3<T>(-x0), x0, true, &separated);
+  if (separated) return false;
+  if (!f.valid()) return true;
+  // Exit parameter along x0 (x0 itself is at 1): the origin is in M iff it is <= 0.
+  const T param = f.k / f.N.dot(x0);
+  T tol = T(0);
+  if constexpr (!ScalarTraits<T>::isExact) tol = query.tolerance() / x0.norm();
+  return param <= tol;
+}
+
+template <class T>
+bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                const Pose<T>& poseQ) {
+  MddCache cache;
+  return intersects(P, poseP, Q, poseQ, cache);
+}
+
+}  // namespace mink

@@ -1,0 +1,172 @@
+// mink/mdd/mdd_types.hpp — the result, options and cache of a minimum-directional-distance
+// query (MDD-DUAL, Choi et al., seed 000).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "mink/core/scalar_traits.hpp"
+#include "mink/core/types.hpp"
+
+namespace mink {
+
+/// Where the origin lies relative to M = P ⊕ −Q on the line of s (DESIGN.md, eq. (1)).
+enum class MddStatus {
+  Separated,    ///< P and Q apart; moving Q by translation along s/|s| makes them touch
+  Touching,     ///< P and Q touch (0 on the boundary of M; within tolerance for inexact T)
+  Penetrating,  ///< P and Q overlap; translation is the shorter way out along ±s
+  NoContact,    ///< no motion of Q along s ever makes P and Q touch (line misses M)
+  IterationLimit  ///< a search hit its iteration cap (never seen in tests; a safety net)
+};
+
+/// Type of the face of M that the line of s hits (MDD paper section II-C).
+enum class MddFaceType {
+  None,  ///< NoContact or IterationLimit
+  FV,    ///< face of P (featureP) translated by a vertex of −Q (featureQ)
+  VF,    ///< vertex of P (featureP) plus a face of −Q (featureQ)
+  EE,    ///< parallelogram of an edge of P (featureP) and an edge of −Q (featureQ)
+  Grazing  ///< the line only touches the boundary of M (case 2 of section IV-A):
+           ///< featureP / featureQ are vertices of P and Q supporting that contact
+};
+
+/// Options of mdd() and intersects(). Defaults are in core/defaults.hpp.
+template <class T>
+struct MddOptions {
+  /// |translation| (length units) at or below which the result is reported Touching.
+  /// Negative: automatic, defaults::kMddTouchToleranceFactor * eps * (extent(P) +
+  /// extent(Q) + |relative translation|) for inexact T; always 0 for exact T.
+  T touchTolerance = T(-1);
+  /// Cap on faces of M visited by one search; negative: automatic,
+  /// defaults::kMddIterationFactor * (faces(P) + faces(Q) + 16)... plus the EE pairs
+  /// an exhaustive fallback may need. Reaching it yields MddStatus::IterationLimit.
+  long long maxVisits = -1;
+  /// Use Dobkin–Kirkpatrick hierarchies for cold support queries on large shapes.
+  bool useHierarchy = true;
+};
+
+/// Result of mdd(). Frames: world (the frame of the poses and of s).
+template <class T>
+struct MddResult {
+  MddStatus status = MddStatus::NoContact;
+  /// Signed MDD in length units: > 0 separated, < 0 penetrating, 0 touching.
+  /// For NoContact: +infinity where T has one, else 0 (check status).
+  T distance = T(0);
+  /// Signed, length units, along s/|s|: moving Q by translation * s/|s| brings P and Q
+  /// into touching contact and |translation| is minimal. For exact T (no sqrt), this is
+  /// parameter * |s| only when |s| == 1; use `parameter` for exact answers.
+  T translation = T(0);
+  /// The same motion as a multiple of s as given: moving Q by parameter * s. Exact for
+  /// exact T (a ratio of polynomials in the inputs).
+  T parameter = T(0);
+  /// Outward normal of the face of M hit by the line (world frame), unit for inexact T;
+  /// for exact T unnormalised (exact direction).
+  Vec3<T> normal = Vec3<T>::Zero();
+  /// Contact witnesses (world frame): witnessP on P, witnessQ on Q at its *given* pose,
+  /// with witnessP - witnessQ == parameter * s: moving Q by that motion brings witnessQ
+  /// onto witnessP.
+  Vec3<T> witnessP = Vec3<T>::Zero();
+  Vec3<T> witnessQ = Vec3<T>::Zero();
+  MddFaceType faceType = MddFaceType::None;
+  int featureP = -1;  ///< face / vertex / edge id on P, per faceType
+  int featureQ = -1;  ///< vertex / face / edge id on Q, per faceType
+  /// Faces of M evaluated, per phase (summed over the d_max and d_min searches).
+  int visitedFV = 0, visitedVF = 0, visitedEE = 0;
+  /// True when the local search's answer failed its check (the hit point must lie in the
+  /// face found) and the exhaustive search over all FV, VF and EE faces answered instead.
+  bool usedFallback = false;
+};
+
+namespace detail {
+/// Marks with an epoch counter: clearing is O(1), no allocation once sized.
+class EpochMarks {
+ public:
+  void reset(std::size_t n) {
+    if (stamp_.size() < n) stamp_.resize(n, 0);
+    if (++epoch_ == 0) {
+      std::fill(stamp_.begin(), stamp_.end(), 0u);
+      epoch_ = 1;
+    }
+  }
+  /// True if i was not marked yet (and marks it).
+  bool mark(int i) {
+    if (stamp_[i] == epoch_) return false;
+    stamp_[i] = epoch_;
+    return true;
+  }
+
+ private:
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t epoch_ = 0;
+};
+
+/// Open-addressing set of int pairs with epoch clearing (visited EE faces, section VI-D).
+class PairMarks {
+ public:
+  void reset() {
+    if (keys_.empty()) grow(256);
+    if (++epoch_ == 0) {
+      std::fill(stamp_.begin(), stamp_.end(), 0u);
+      epoch_ = 1;
+    }
+    count_ = 0;
+  }
+  bool mark(int a, int b) {
+    if (2 * (count_ + 1) > keys_.size()) rehash();
+    const std::uint64_t k = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+                            static_cast<std::uint32_t>(b);
+    std::size_t i = hash(k) & (keys_.size() - 1);
+    while (stamp_[i] == epoch_) {
+      if (keys_[i] == k) return false;
+      i = (i + 1) & (keys_.size() - 1);
+    }
+    stamp_[i] = epoch_;
+    keys_[i] = k;
+    ++count_;
+    return true;
+  }
+
+ private:
+  static std::size_t hash(std::uint64_t k) {
+    k ^= k >> 33;
+    k *= 0xff51afd7ed558ccdULL;
+    k ^= k >> 33;
+    return static_cast<std::size_t>(k);
+  }
+  void grow(std::size_t n) {
+    keys_.assign(n, 0);
+    stamp_.assign(n, 0);
+  }
+  void rehash() {
+    std::vector<std::uint64_t> old;
+    for (std::size_t i = 0; i < keys_.size(); ++i)
+      if (stamp_[i] == epoch_) old.push_back(keys_[i]);
+    grow(keys_.size() * 2);
+    epoch_ = 1;
+    count_ = 0;
+    for (std::uint64_t k : old) mark(static_cast<int>(k >> 32), static_cast<int>(k & 0xffffffffu));
+  }
+  std::vector<std::uint64_t> keys_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t epoch_ = 0;
+  std::size_t count_ = 0;
+};
+}  // namespace detail
+
+/// Per-pair state a caller may keep between queries (frame coherence, section VI-E):
+/// the last optimal face of P seeds the next SEARCH-FV, the last support vertices warm
+/// the support queries, and the visited-marks buffers are reused, so a warm query does
+/// not allocate. One cache per (P, Q) pair; not thread-safe (one per thread).
+struct MddCache {
+  int faceP = -1;    ///< seed face of P for SEARCH-FV
+  int vertexP = -1;  ///< last support vertex of P
+  int vertexQ = -1;  ///< last support vertex of Q
+  const void* shapeP = nullptr;  ///< identity of the shapes the hints belong to
+  const void* shapeQ = nullptr;
+  detail::EpochMarks marksP, marksQ;
+  detail::PairMarks marksEE;
+  std::vector<int> edgesP, edgesQ;  // SEARCH-EE candidate edge buffers
+};
+
+}  // namespace mink
