@@ -359,7 +359,7 @@ TEST(MddCoherence, WarmEqualsCold) {
   const auto ptsQ = mink_test::paperShape(mink_test::PaperShape::P6, rng);
   const auto P = ConvexPolyhedron<double>::fromPoints(ptsP);
   const auto Q = ConvexPolyhedron<double>::fromPoints(ptsQ);
-  mink::MddCache cache;
+  mink::MddCache<double> cache;
   Pose<double> poseQ;
   int warmVisits = 0, coldVisits = 0, contacts = 0;
   for (int frame = 0; frame < 200; ++frame) {

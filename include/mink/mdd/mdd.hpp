@@ -57,7 +57,7 @@ void checkPose(const Pose<T>& pose, const char* name) {
 template <class T>
 class MddQuery {
  public:
-  MddQuery(const PairFrame<T>& F, const Vec3<T>& s, MddCache& cache, const MddOptions<T>& opt, MddResult<T>& res)
+  MddQuery(const PairFrame<T>& F, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& opt, MddResult<T>& res)
       : F_(F), s_(s), cache_(cache), res_(res) {
     const ConvexPolyhedron<T>& P = F.P();
     const ConvexPolyhedron<T>& Q = F.Q();
@@ -168,23 +168,23 @@ class MddQuery {
     const Vec3<T>& N = m.N;
     T eps = T(0);
     if constexpr (!ScalarTraits<T>::isExact) eps = tol_ * N.norm();
-    supportSet(P, vp, [&](int v) { return T(N.dot(P.vertex(v))); }, eps, cache_.marksP, setP_);
-    supportSet(Q, vq, [&](int v) { return T(-N.dot(F_.q(v))); }, eps, cache_.marksQ, setQ_);
-    pts_.clear();
-    for (std::size_t i = 0; i < setP_.size(); ++i)
-      for (std::size_t j = 0; j < setQ_.size(); ++j) {
-        const Vec3<T> y = P.vertex(setP_[i]) - F_.q(setQ_[j]);
-        pts_.push_back({{y.dot(u1_), y.dot(u2_)}, static_cast<int>(i * setQ_.size() + j)});
+    supportSet(P, vp, [&](int v) { return T(N.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
+    supportSet(Q, vq, [&](int v) { return T(-N.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
+    cache_.points2.clear();
+    for (std::size_t i = 0; i < cache_.setP.size(); ++i)
+      for (std::size_t j = 0; j < cache_.setQ.size(); ++j) {
+        const Vec3<T> y = P.vertex(cache_.setP[i]) - F_.q(cache_.setQ[j]);
+        cache_.points2.push_back({{y.dot(u1_), y.dot(u2_)}, static_cast<int>(i * cache_.setQ.size() + j)});
       }
     OriginLocation<T> loc;
-    if (!locateOrigin2(pts_, loc)) return false;
+    if (!locateOrigin2(cache_.points2, cache_.hull2, loc)) return false;
     wP_ = Vec3<T>::Zero();
     wQ_ = Vec3<T>::Zero();
     for (int i = 0; i < loc.count; ++i) {
-      const int ip = loc.id[i] / static_cast<int>(setQ_.size());
-      const int iq = loc.id[i] % static_cast<int>(setQ_.size());
-      wP_ += loc.weight[i] * P.vertex(setP_[ip]);
-      wQ_ += loc.weight[i] * F_.q(setQ_[iq]);
+      const int ip = loc.id[i] / static_cast<int>(cache_.setQ.size());
+      const int iq = loc.id[i] % static_cast<int>(cache_.setQ.size());
+      wP_ += loc.weight[i] * P.vertex(cache_.setP[ip]);
+      wQ_ += loc.weight[i] * F_.q(cache_.setQ[iq]);
     }
     return true;
   }
@@ -198,15 +198,15 @@ class MddQuery {
     vq = F_.supportMinusQ(w, cache_.vertexQ);
     T eps = T(0);
     if constexpr (!ScalarTraits<T>::isExact) eps = tol_ * w.norm();
-    supportSet(P, vp, [&](int v) { return T(w.dot(P.vertex(v))); }, eps, cache_.marksP, setP_);
-    supportSet(Q, vq, [&](int v) { return T(-w.dot(F_.q(v))); }, eps, cache_.marksQ, setQ_);
+    supportSet(P, vp, [&](int v) { return T(w.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
+    supportSet(Q, vq, [&](int v) { return T(-w.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
     // In the plane: coordinate a along s, b along e = w × s; the line is b == 0.
     const Vec3<T> e = w.cross(s_);
-    ab_.clear();
-    for (int ip : setP_)
-      for (int iq : setQ_) {
+    cache_.ab.clear();
+    for (int ip : cache_.setP)
+      for (int iq : cache_.setQ) {
         const Vec3<T> y = P.vertex(ip) - F_.q(iq);
-        ab_.push_back({y.dot(s_), y.dot(e)});
+        cache_.ab.push_back({y.dot(s_), y.dot(e)});
       }
     bool any = false;
     T amin = T(0), amax = T(0);
@@ -215,12 +215,12 @@ class MddQuery {
       if (!any || a > amax) amax = a;
       any = true;
     };
-    for (std::size_t i = 0; i < ab_.size(); ++i) {
-      if (ab_[i].second == T(0)) take(ab_[i].first);
-      for (std::size_t j = 0; j < ab_.size(); ++j) {
-        const T bi = ab_[i].second, bj = ab_[j].second;
+    for (std::size_t i = 0; i < cache_.ab.size(); ++i) {
+      if (cache_.ab[i].second == T(0)) take(cache_.ab[i].first);
+      for (std::size_t j = 0; j < cache_.ab.size(); ++j) {
+        const T bi = cache_.ab[i].second, bj = cache_.ab[j].second;
         if (bi < T(0) && bj > T(0))
-          take((ab_[i].first * bj - ab_[j].first * bi) / (bj - bi));
+          take((cache_.ab[i].first * bj - cache_.ab[j].first * bi) / (bj - bi));
       }
     }
     if (!any) return false;
@@ -237,15 +237,12 @@ class MddQuery {
  private:
   const PairFrame<T>& F_;
   Vec3<T> s_;
-  MddCache& cache_;
+  MddCache<T>& cache_;
   MddResult<T>& res_;
   T tol_;
   long long cap_;
   Vec3<T> u1_, u2_;
   Vec3<T> wP_ = Vec3<T>::Zero(), wQ_ = Vec3<T>::Zero();
-  std::vector<int> setP_, setQ_;
-  std::vector<std::pair<std::pair<T, T>, int>> pts_;
-  std::vector<std::pair<T, T>> ab_;
 };
 
 /// |s| for reporting. Exact T has no sqrt: exact when |s|^2 == 1, otherwise a Newton
@@ -282,7 +279,7 @@ Vec3<T> unitOrExact(const Vec3<T>& n) {
 /// `cache` (optional) carries frame coherence between queries of the same pair.
 template <class T>
 MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
-                 const Pose<T>& poseQ, const Vec3<T>& s, MddCache& cache, const MddOptions<T>& options = {}) {
+                 const Pose<T>& poseQ, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options = {}) {
   for (int i = 0; i < 3; ++i)
     if (!ScalarTraits<T>::isFinite(s[i])) throw InvalidInput("mdd: direction s is not finite");
   if (s == Vec3<T>::Zero()) throw InvalidInput("mdd: direction s is zero");
@@ -402,7 +399,7 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
 template <class T>
 MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                  const Pose<T>& poseQ, const Vec3<T>& s, const MddOptions<T>& options = {}) {
-  MddCache cache;
+  MddCache<T> cache;
   return mdd(P, poseP, Q, poseQ, s, cache, options);
 }
 
@@ -413,7 +410,7 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
 /// its cap, the answer is `true` (the conservative one for collision detection).
 template <class T>
 bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
-                const Pose<T>& poseQ, MddCache& cache) {
+                const Pose<T>& poseQ, MddCache<T>& cache) {
   detail::checkPose(poseP, "poseP");
   detail::checkPose(poseQ, "poseQ");
   if (cache.shapeP != &P || cache.shapeQ != &Q) {
@@ -444,7 +441,7 @@ bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Convex
 template <class T>
 bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                 const Pose<T>& poseQ) {
-  MddCache cache;
+  MddCache<T> cache;
   return intersects(P, poseP, Q, poseQ, cache);
 }
 

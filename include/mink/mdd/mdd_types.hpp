@@ -157,7 +157,9 @@ class PairMarks {
 /// Per-pair state a caller may keep between queries (frame coherence, section VI-E):
 /// the last optimal face of P seeds the next SEARCH-FV, the last support vertices warm
 /// the support queries, and the visited-marks buffers are reused, so a warm query does
-/// not allocate. One cache per (P, Q) pair; not thread-safe (one per thread).
+/// not allocate. One cache per (P, Q) pair and scalar type; not thread-safe (one per
+/// thread).
+template <class T>
 struct MddCache {
   int faceP = -1;    ///< seed face of P for SEARCH-FV
   int vertexP = -1;  ///< last support vertex of P
@@ -167,6 +169,10 @@ struct MddCache {
   detail::EpochMarks marksP, marksQ;
   detail::PairMarks marksEE;
   std::vector<int> edgesP, edgesQ;  // SEARCH-EE candidate edge buffers
+  // Facet-check and grazing buffers.
+  std::vector<int> setP, setQ;
+  std::vector<std::pair<std::pair<T, T>, int>> points2, hull2;
+  std::vector<std::pair<T, T>> ab;
 };
 
 }  // namespace mink

@@ -47,14 +47,15 @@ struct OriginLocation {
 };
 
 template <class T>
-bool locateOrigin2(std::vector<std::pair<std::pair<T, T>, int>>& pts, OriginLocation<T>& loc) {
+bool locateOrigin2(std::vector<std::pair<std::pair<T, T>, int>>& pts, std::vector<std::pair<std::pair<T, T>, int>>& h,
+                   OriginLocation<T>& loc) {
   using P2 = std::pair<T, T>;
   std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   pts.erase(std::unique(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
             pts.end());
   const P2 o(T(0), T(0));
   const std::size_t n = pts.size();
-  std::vector<std::pair<P2, int>> h(2 * n + 1);
+  h.resize(2 * n + 1);
   std::size_t k = 0;
   for (std::size_t i = 0; i < n; ++i) {
     while (k >= 2 && orient2(h[k - 2].first, h[k - 1].first, pts[i].first) <= 0) --k;
