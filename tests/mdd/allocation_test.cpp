@@ -48,7 +48,10 @@ TEST(MddAllocation, WarmQueriesDoNotAllocate) {
   // The counter sees allocations (so a zero below means something).
   gAllocations = 0;
   gCounting = true;
-  delete new int(1);
+  {
+    void* (*volatile allocate)(std::size_t) = &::operator new;  // not elidable
+    ::operator delete(allocate(8));
+  }
   gCounting = false;
   ASSERT_EQ(gAllocations.load(), 1);
   gAllocations = 0;
