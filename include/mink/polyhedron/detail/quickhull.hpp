@@ -10,9 +10,13 @@
 //   4. Replace the visible faces by a cone of triangles from the eye to the horizon;
 //      hand the visible faces' points to the new faces (or drop them: inside).
 //   5. Repeat until no face has points.
-// Decisions are signs of n.(p - a) with n the (exact, for exact T) face normal; for
-// inexact T the normal is unit so `tol` is a distance. The result may contain coplanar
-// neighbouring triangles and non-corner vertices: the polyhedron builder merges them.
+// "p is above face (a, b, c)" is decided exactly: orient3d (core/orientation.hpp) for
+// floating-point T, the exact sign of n.(p - a) for exact T. So the triangulation is the
+// exact hull of the given numbers and always consistent (a tolerance here instead breaks
+// quickhull on nearly coplanar input: faces end up facing the wrong way). `tol` only
+// rejects (nearly) degenerate input when choosing the first tetrahedron. The result may
+// contain coplanar neighbouring triangles and non-corner vertices: the polyhedron builder
+// merges them, within the tolerance.
 #pragma once
 
 #include <algorithm>
@@ -21,6 +25,7 @@
 #include <vector>
 
 #include "mink/core/error.hpp"
+#include "mink/core/orientation.hpp"
 #include "mink/core/scalar_traits.hpp"
 #include "mink/core/types.hpp"
 
@@ -53,6 +58,13 @@ class Quickhull {
   Quickhull(const std::vector<Vec3<T>>& p, const T& tol) : pts_(p), tol_(tol) {}
 
   T dist(const Face& f, int i) const { return f.n.dot(pts_[i] - pts_[f.v[0]]); }
+  bool above(const Face& f, int i) const {
+    if constexpr (ScalarTraits<T>::isExact) {
+      return dist(f, i) > T(0);
+    } else {
+      return orient3d(pts_[f.v[0]], pts_[f.v[1]], pts_[f.v[2]], pts_[i]) > 0;
+    }
+  }
 
   int makeFace(int a, int b, int c) {
     Face f;
@@ -79,9 +91,8 @@ class Quickhull {
   // Hands point p to the first of `candidates` it is strictly above; false if none.
   bool assign(int p, const std::vector<int>& candidates) {
     for (int fi : candidates) {
-      const T d = dist(faces_[fi], p);
-      if (d > tol_) {
-        addOutside(fi, p, d);
+      if (above(faces_[fi], p)) {
+        addOutside(fi, p, dist(faces_[fi], p));
         return true;
       }
     }
@@ -250,7 +261,7 @@ class Quickhull {
       if (nf.visitMark == mark) continue;
       int back = 0;
       while (nf.nbr[back] != cur) ++back;
-      if (dist(nf, eye) > tol_) {
+      if (above(nf, eye)) {
         nf.visitMark = mark;
         visible.push_back(nb);
         stack.push_back({nb, (back + 1) % 3, 0, 2});
