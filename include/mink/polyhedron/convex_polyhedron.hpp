@@ -2,14 +2,15 @@
 // with planar convex faces, half-edge adjacency, face planes and support queries.
 //
 // Built two ways, both ending in the same finishing step:
-//   fromPoints: convex hull by quickhull (Barber, Dobkin, Huhdanpaa 1996) with a
-//               tolerance that is exactly zero for exact scalars;
+//   fromPoints: convex hull by quickhull (Barber, Dobkin, Huhdanpaa 1996), every
+//               "above this face?" decided exactly (core/orientation.hpp): the result
+//               is the exact hull of the given numbers, in any scalar type;
 //   fromMesh:   validation of a closed, consistently oriented, locally convex mesh
 //               (by van Heijenoort's theorem, local convexity of a closed connected
 //               surface implies global convexity);
-//   finishing:  merge neighbouring faces with the same plane into one convex face (the
-//               MDD paper's "span of faces with the same normal", its section VI-C),
-//               drop vertices that are no longer corners, build the half-edge arrays.
+//   finishing:  merge neighbouring faces lying exactly in one plane into one convex
+//               face (the MDD paper's "span of faces with the same normal", VI-C), drop
+//               vertices that are no longer corners, build the half-edge arrays.
 //
 // Conventions: faces are counter-clockwise seen from outside; face normals point
 // outward; for inexact T they are unit length, for exact T they are Newell normals
@@ -34,10 +35,11 @@ namespace mink {
 /// Options of shape construction (fromPoints, fromMesh).
 template <class T>
 struct HullOptions {
-  /// Distance under which a point counts as on a plane, in the input's length unit.
-  /// Negative (default): automatic, defaults::kHullToleranceFactor * eps * extent for
-  /// inexact T and exactly 0 for exact T. Zero: decide by the sign of the computed
-  /// value alone.
+  /// Degeneracy tolerance in the input's length unit: fromPoints rejects points that
+  /// all lie within it of one point, line or plane; fromMesh allows faces this far from
+  /// planar and this much local non-convexity. The hull and the face merging are exact
+  /// whatever its value. Negative (default): automatic,
+  /// defaults::kHullToleranceFactor * eps * extent for inexact T, exactly 0 for exact T.
   T tolerance = T(-1);
 };
 

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "mink/core/orientation.hpp"
 #include "mink/polyhedron/detail/quickhull.hpp"
 
 namespace mink {
@@ -73,10 +74,10 @@ struct PolyhedronBuilder {
 
   // ---------------------------------------------------------------------------------
   // Finishing: from a closed, consistently oriented, convex polygon mesh over `pts`
-  // (loops CCW from outside) to the polyhedron: merge neighbouring polygons lying in one
-  // plane (within tol of the plane of the largest polygon of the group, so merging
-  // cannot drift along a gently curved surface), splice out vertices that are no longer
-  // corners (in fewer than three faces), and lay out the half-edge arrays.
+  // (loops CCW from outside) to the polyhedron: merge neighbouring polygons lying exactly
+  // in one plane (orient3d == 0: merging within a tolerance instead leaves dents of that
+  // size, on which hill-climbing stops at local maxima), splice out vertices that are no
+  // longer corners (in fewer than three faces), and lay out the half-edge arrays.
   // Twins of a closed oriented polygon mesh given as flattened loops: half-edge h runs
   // from org[h] to org[nxt[h]]. Sorting undirected keys pairs each edge's two halves.
   static std::vector<int> twinsBySorting(const std::vector<int>& org, const std::vector<int>& nxt) {
@@ -140,7 +141,17 @@ struct PolyhedronBuilder {
       group[seed] = g;
       queue.assign(1, seed);
       const Vec3<T>& n = unitN[seed];
-      const Vec3<T>& o = pts[polys[seed][0]];
+      // Three corners of the seed spanning its plane (the widest fan triangle from its
+      // first corner); neighbours join only if exactly in that plane.
+      const Loop& S = polys[seed];
+      int k2 = 2;
+      for (std::size_t i = 3; i < S.size(); ++i)
+        if ((pts[S[1]] - pts[S[0]]).cross(pts[S[i]] - pts[S[0]]).squaredNorm() >
+            (pts[S[1]] - pts[S[0]]).cross(pts[S[k2]] - pts[S[0]]).squaredNorm())
+          k2 = static_cast<int>(i);
+      const Vec3<T>& a = pts[S[0]];
+      const Vec3<T>& b = pts[S[1]];
+      const Vec3<T>& c = pts[S[k2]];
       for (std::size_t qi = 0; qi < queue.size(); ++qi) {
         const int f = queue[qi];
         for (int h = polyStart[f]; h < polyStart[f + 1]; ++h) {
@@ -149,7 +160,7 @@ struct PolyhedronBuilder {
           if (!(n.dot(rawN[nb]) > T(0))) continue;
           bool coplanar = true;
           for (int v : polys[nb]) {
-            if (absValue(n.dot(pts[v] - o)) > tol) {
+            if (orient3d(a, b, c, pts[v]) != 0) {
               coplanar = false;
               break;
             }
