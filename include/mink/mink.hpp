@@ -1,0 +1,30 @@
+// mink/mink.hpp — the whole public surface of mink in one include, for programs (physics
+// engines, planners) that want everything and do not mind the compile time. Each layer's
+// headers can also be included on their own; see README.md for the layout.
+//
+// mink is header-only and needs Eigen 3.3+ alone. Nothing here links, allocates at
+// static-initialisation time or keeps global state.
+#pragma once
+
+// core: scalar traits, Vec3 / Pose, tolerances and the one exception type.
+#include "mink/core/defaults.hpp"
+#include "mink/core/error.hpp"
+#include "mink/core/scalar_traits.hpp"
+#include "mink/core/orientation.hpp"
+#include "mink/core/types.hpp"
+
+// polyhedron: ConvexPolyhedron<T> (hull, validation, adjacency, support).
+#include "mink/polyhedron/convex_polyhedron.hpp"
+
+// gauss_map: Gauss maps and their exact predicates; hierarchy: Dobkin–Kirkpatrick.
+#include "mink/gauss_map/arc_intersection.hpp"
+#include "mink/gauss_map/gauss_map.hpp"
+#include "mink/hierarchy/dk_hierarchy.hpp"
+
+// mdd: the minimum directional distance between two convex polyhedra.
+#include "mink/mdd/mdd.hpp"
+
+// io: OBJ and OFF readers and writers.
+#include "mink/io/indexed_mesh.hpp"
+#include "mink/io/obj.hpp"
+#include "mink/io/off.hpp"
