@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# Builds mink and runs its whole test suite twice:
+#   1. Release, everything (tests, benchmarks, examples) in build/, then ctest;
+#   2. AddressSanitizer + UndefinedBehaviorSanitizer (-O1 -g, assertions on), tests only,
+#      in build-asan/, then ctest without the package test.
+# On Debian/Ubuntu, when run as root, it first installs missing build dependencies with
+# apt-get (nothing is installed when they are all present). A configure or build error
+# stops it at once; failing tests of the first run do not keep the second from running.
+# Exits non-zero if anything failed.
+#
+# Environment: MINK_BUILD_ROOT (default: the repository) holds build/ and build-asan/;
+#              MINK_JOBS (default: nproc) is the build and ctest parallelism.
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+root="${MINK_BUILD_ROOT:-$repo}"
+jobs="${MINK_JOBS:-$(nproc)}"
+
+packages=(cmake ninja-build g++ libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev
+          libgtest-dev libfcl-dev libccd-dev libbenchmark-dev libbullet-dev python3-matplotlib)
+
+ensure_packages() {
+  if ! command -v dpkg-query >/dev/null 2>&1; then
+    echo "run_all.sh: not a Debian system; make sure these are installed: ${packages[*]}" >&2
+    return 0
+  fi
+  local missing=() p
+  for p in "${packages[@]}"; do
+    if [[ "$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)" != "install ok installed" ]]; then
+      missing+=("$p")
+    fi
+  done
+  ((${#missing[@]} == 0)) && return 0
+  if [[ "$(id -u)" == 0 ]]; then
+    echo "run_all.sh: installing ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update
+    apt-get install -y --no-install-recommends "${missing[@]}"
+  else
+    echo "run_all.sh: missing packages: ${missing[*]}" >&2
+    echo "run_all.sh: install them with: sudo apt-get install ${missing[*]}" >&2
+    echo "run_all.sh: trying anyway (they may be installed outside dpkg)" >&2
+  fi
+}
+
+ensure_packages
+
+echo "== run_all.sh: Release build and tests in $root/build"
+cmake -S "$repo" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build "$root/build" -j "$jobs"
+release_tests=passed
+ctest --test-dir "$root/build" --output-on-failure -j "$jobs" || release_tests=FAILED
+
+echo "== run_all.sh: AddressSanitizer + UndefinedBehaviorSanitizer tests in $root/build-asan"
+export ASAN_OPTIONS=detect_leaks=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+cmake -S "$repo" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DMINK_SANITIZE=ON \
+  -DMINK_BUILD_TESTS=ON -DMINK_BUILD_BENCHMARKS=OFF -DMINK_BUILD_EXAMPLES=OFF
+cmake --build "$root/build-asan" -j "$jobs"
+sanitizer_tests=passed
+ctest --test-dir "$root/build-asan" --output-on-failure -j "$jobs" -E '^package\.' \
+  || sanitizer_tests=FAILED
+
+echo "== run_all.sh: Release tests $release_tests, ASan+UBSan tests $sanitizer_tests"
+[[ "$release_tests" == passed && "$sanitizer_tests" == passed ]]
