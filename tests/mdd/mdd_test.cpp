@@ -14,6 +14,7 @@
 
 #include "support/gjk_reference.hpp"
 #include "support/mdd_reference.hpp"
+#include "support/exact_placement.hpp"
 #include "support/paper_shapes.hpp"
 
 namespace {
@@ -191,11 +192,12 @@ TEST(MddPaper, FclDistanceAfterMotionIsZero) {
       if (r.status == MddStatus::NoContact) continue;
       Pose<double> moved = poseQ;
       moved.translation += r.translation * s.normalized();
-      const auto f = mink_test::fclDistance(gP, Pose<double>(), gQ, moved);
-      // Touching: FCL's distance is ~0 when it sees the shapes apart; when rounding makes
-      // them overlap, the penetration depth (libccd GJK+EPA) must be ~0 instead.
-      const double dist = f.colliding ? mink_test::ccdPenetrationEPA(gP, Pose<double>(), gQ, moved).depth
-                                      : f.distance;
+      // Touching: the GJK distance (FCL, its nearest points certified by brute force, else
+      // libccd) is ~0 when the shapes are seen apart; when rounding makes them overlap, the
+      // penetration depth (libccd GJK+EPA) must be ~0 instead.
+      const auto c = mink_test::certifiedDistance(gP, Pose<double>(), gQ, moved);
+      const double dist =
+          c.distance > 0.0 ? c.distance : mink_test::ccdPenetrationEPA(gP, Pose<double>(), gQ, moved).depth;
       worst = std::max(worst, dist);
       EXPECT_LT(dist, 1e-6) << "seed " << seed << " pair " << mink_test::paperShapeName(pair.first) << " k " << k;
       ++n;
