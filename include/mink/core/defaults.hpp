@@ -19,12 +19,12 @@ constexpr double kHullToleranceFactor = 64.0;
 
 /// A convex polyhedron with fewer vertices than this answers support queries by
 /// hill-climbing its vertex graph and never builds a Dobkin–Kirkpatrick hierarchy.
-/// Unit: vertices. Measured (benchmarks/README.md, double, ellipsoid point sets, random
-/// directions): the hierarchy's query time falls below a cold hill-climb's from vertex 0
-/// at 48 .. 128 vertices, but by less than 25% up to ~800 vertices; from 1024 on it is
-/// >= 1.3x faster (2x at 4096, 7x at 100k) and its build (~2.3x the hull build) pays
-/// back after ~1e5 queries. Safe range: 16 .. 1e5 (any value is correct; only speed and
-/// memory, ~240 bytes per vertex, change).
+/// Unit: vertices. Measured (benchmarks/README.md; double, ellipsoid point sets, random
+/// directions, three runs): the hierarchy's query time falls below a cold hill-climb's
+/// from vertex 0 at 48 .. 128 vertices, but by less than 25% up to 512 .. 768 vertices;
+/// from 1024 on it is >= 1.3x faster (2x at 4096, 7.7x at 100k). Its build (2.1 .. 2.8x
+/// the hull build, ~240 bytes per vertex) pays back after ~1.5e5 such queries. Safe
+/// range: 16 .. 1e5 (any value is correct; only speed and memory change).
 constexpr int kHierarchyMinVertices = 1024;
 
 /// Dobkin–Kirkpatrick construction removes independent vertices of degree at most
