@@ -112,7 +112,48 @@ int exactOrient3d(const Vec3<F>& a, const Vec3<F>& b, const Vec3<F>& c, const Ve
   return 0;
 }
 
+// a*b - c*d, each product exact, the difference rounded once (up to one more rounding
+// of the tiny correction terms): accurate to about 1 ulp even under cancellation.
+template <class F>
+inline F diffOfProducts(F a, F b, F c, F d) {
+  F p, pe, q, qe;
+  twoProduct(a, b, p, pe);
+  twoProduct(c, d, q, qe);
+  F s, se;
+  twoSum(p, F(-q), s, se);
+  return s + (se + (pe - qe));
+}
+
 }  // namespace detail
+
+/// (b − a) × (c − a), accurate to about one ulp per component for floating-point T even
+/// when the triangle is a sliver (the plain formula loses all digits there); exact for
+/// exact T. Float is computed in double (exact products) and rounded once.
+template <class T>
+Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    return (b - a).cross(c - a);
+  } else if constexpr (std::is_same<T, float>::value) {
+    return accurateCross<double>(a.template cast<double>(), b.template cast<double>(), c.template cast<double>())
+        .template cast<float>();
+  } else {
+    // Differences as exact two-term expansions u = uh + ul, v = vh + vl; the cross product
+    // of the high parts carries the value, the low parts are first-order corrections.
+    Vec3<T> uh, ul, vh, vl;
+    for (int i = 0; i < 3; ++i) {
+      detail::twoSum(b[i], T(-a[i]), uh[i], ul[i]);
+      detail::twoSum(c[i], T(-a[i]), vh[i], vl[i]);
+    }
+    Vec3<T> n;
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      const T main = detail::diffOfProducts(uh[j], vh[k], uh[k], vh[j]);
+      const T corr = (uh[j] * vl[k] + ul[j] * vh[k]) - (uh[k] * vl[j] + ul[k] * vh[j]);
+      n[i] = main + corr;
+    }
+    return n;
+  }
+}
 
 /// Exact sign of det[b − a, c − a, d − a] (see the header comment).
 template <class T>

@@ -53,13 +53,47 @@ struct PolyhedronBuilder {
                              " has a non-finite coordinate (NaN or Inf)");
   }
 
-  // Newell normal of a loop, relative to its first vertex (exact for exact T).
+  // Normal of a loop: for exact T its Newell normal; otherwise, for an exactly planar
+  // loop, the accurate cross product of its widest fan triangle from the first corner
+  // (about one ulp per component, where the textbook Newell sum loses every digit on
+  // sliver faces), and for a non-planar loop (fromMesh, within its tolerance) the Newell
+  // normal of the whole loop.
   static Vec3<T> newell(const std::vector<Vec3<T>>& pts, const Loop& loop) {
-    Vec3<T> n = Vec3<T>::Zero();
     const Vec3<T>& o = pts[loop[0]];
-    for (std::size_t i = 1; i + 1 < loop.size(); ++i)
-      n += (pts[loop[i]] - o).cross(pts[loop[i + 1]] - o);
-    return n;
+    if constexpr (ScalarTraits<T>::isExact) {
+      // Exact already: the Newell normal (the documented one for exact T).
+      Vec3<T> n = Vec3<T>::Zero();
+      for (std::size_t i = 1; i + 1 < loop.size(); ++i) n += (pts[loop[i]] - o).cross(pts[loop[i + 1]] - o);
+      return n;
+    }
+    Vec3<T> best = Vec3<T>::Zero();
+    T best2 = T(0);
+    for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
+      const Vec3<T> n = accurateCross(o, pts[loop[i]], pts[loop[i + 1]]);
+      const T n2 = n.squaredNorm();
+      if (n2 > best2) {
+        best2 = n2;
+        best = n;
+      }
+    }
+    if (loop.size() == 3) return best;
+    Vec3<T> sum = Vec3<T>::Zero();
+    for (std::size_t i = 1; i + 1 < loop.size(); ++i) sum += (pts[loop[i]] - o).cross(pts[loop[i + 1]] - o);
+    // Prefer the accurate triangle normal when the loop is exactly planar.
+    return isExactlyPlanar(pts, loop) ? best : sum;
+  }
+
+  static bool isExactlyPlanar(const std::vector<Vec3<T>>& pts, const Loop& loop) {
+    // The widest fan triangle spans the plane; every corner must be on it exactly.
+    std::size_t k = 2;
+    const Vec3<T>& o = pts[loop[0]];
+    for (std::size_t i = 2; i < loop.size(); ++i)
+      if ((pts[loop[1]] - o).cross(pts[loop[i]] - o).squaredNorm() >
+          (pts[loop[1]] - o).cross(pts[loop[k]] - o).squaredNorm())
+        k = i;
+    for (int v : loop)
+      if (orient3d(o, pts[loop[1]], pts[loop[k]], pts[v]) != 0) return false;
+    return true;
   }
 
   // Normal used for distance tests: unit for inexact T, exact Newell normal otherwise.

@@ -1,0 +1,254 @@
+// Tests of mink/core/orientation.hpp: orient3d(a, b, c, d) is the exact sign of
+// det[b - a, c - a, d - a] of the given numbers. Reference: the same determinant in
+// exact rational arithmetic (CGAL::Gmpq) from the exact values of the inputs.
+// Inputs are chosen to reach the exact fallback: points on (or within a few ulps of) a
+// plane through three others, collinear and coincident points, at extreme scales.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <type_traits>
+
+#include <CGAL/Gmpq.h>
+
+#include "mink/core/orientation.hpp"
+
+namespace {
+
+using mink::Vec3;
+using Q = CGAL::Gmpq;
+
+Q toQ(const Q& x) { return x; }
+Q toQ(double x) { return Q(x); }
+Q toQ(float x) { return Q(static_cast<double>(x)); }
+Q toQ(long double x) {
+  // A long double is a sum of at most a few doubles; peel them off exactly.
+  Q sum(0);
+  long double rest = x;
+  for (int i = 0; i < 4 && rest != 0.0L; ++i) {
+    const double hi = static_cast<double>(rest);
+    sum += Q(hi);
+    rest -= static_cast<long double>(hi);
+  }
+  if (rest != 0.0L) ADD_FAILURE() << "toQ: long double not converted exactly";
+  return sum;
+}
+
+template <class T>
+Vec3<Q> toQ3(const Vec3<T>& p) {
+  return Vec3<Q>(toQ(p[0]), toQ(p[1]), toQ(p[2]));
+}
+
+template <class T>
+int exactSign(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& d) {
+  const Vec3<Q> A = toQ3(a), B = toQ3(b), C = toQ3(c), D = toQ3(d);
+  const Q det = (B - A).dot((C - A).cross(D - A));
+  return CGAL::sign(det);
+}
+
+long double ld(const Q& x) { return CGAL::to_double(x); }
+template <class T>
+long double ld(const T& x) {
+  return static_cast<long double>(x);
+}
+template <class T>
+std::string str(const Vec3<T>& p) {
+  std::ostringstream os;
+  os.precision(21);
+  os << "(" << ld(p[0]) << ", " << ld(p[1]) << ", " << ld(p[2]) << ")";
+  return os.str();
+}
+
+// Compares orient3d with the exact sign and with the sign rules of a determinant (odd
+// permutations flip it). Returns the exact sign.
+template <class T>
+int expectExact(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& d, const std::string& what,
+                int& failures) {
+  const int want = exactSign(a, b, c, d);
+  const int got = mink::orient3d(a, b, c, d);
+  const int swapped = mink::orient3d(b, a, c, d);
+  // The expansion-arithmetic fallback on its own (the filter decides most inputs
+  // before reaching it).
+  int expansion = want;
+  if constexpr (std::is_same<T, double>::value || std::is_same<T, long double>::value)
+    expansion = mink::detail::exactOrient3d(a, b, c, d);
+  if ((got != want || swapped != -want || expansion != want) && failures++ < 8)
+    ADD_FAILURE() << what << ": orient3d = " << got << ", swapped " << swapped << ", exactOrient3d " << expansion
+                  << ", exact sign " << want << "\n  a=" << str(a) << "\n  b=" << str(b) << "\n  c=" << str(c)
+                  << "\n  d=" << str(d);
+  return want;
+}
+
+template <class T>
+T randomValue(std::mt19937& rng, double lo, double hi) {
+  std::uniform_real_distribution<double> u(lo, hi);
+  if constexpr (std::is_same<T, long double>::value) {
+    // Use all 64 mantissa bits.
+    return static_cast<long double>(u(rng)) + static_cast<long double>(u(rng)) * std::ldexp(1.0L, -40);
+  } else {
+    return static_cast<T>(u(rng));
+  }
+}
+
+template <class T>
+Vec3<T> randomPoint(std::mt19937& rng, double lo = -1.0, double hi = 1.0) {
+  return Vec3<T>(randomValue<T>(rng, lo, hi), randomValue<T>(rng, lo, hi), randomValue<T>(rng, lo, hi));
+}
+
+template <class T>
+class Orient3d : public ::testing::Test {};
+using Floats = ::testing::Types<float, double, long double>;
+TYPED_TEST_SUITE(Orient3d, Floats);
+
+TYPED_TEST(Orient3d, GenericPoints) {
+  using T = TypeParam;
+  const unsigned seed = 9101u;
+  std::mt19937 rng(seed);
+  int failures = 0;
+  for (int i = 0; i < 10000; ++i) {
+    const auto a = randomPoint<T>(rng), b = randomPoint<T>(rng), c = randomPoint<T>(rng), d = randomPoint<T>(rng);
+    expectExact(a, b, c, d, "seed 9101 generic #" + std::to_string(i), failures);
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+TYPED_TEST(Orient3d, NearlyCoplanar) {
+  using T = TypeParam;
+  const unsigned seed = 9102u;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> st(-2.0, 2.0);
+  int failures = 0, zeros = 0, nonzeros = 0;
+  for (int i = 0; i < 10000; ++i) {
+    const auto a = randomPoint<T>(rng, -10, 10), b = randomPoint<T>(rng, -10, 10), c = randomPoint<T>(rng, -10, 10);
+    const T s = T(st(rng)), t = T(st(rng));
+    // d on the plane up to the rounding of this expression: |det| tiny or zero.
+    const Vec3<T> d = a + (b - a) * s + (c - a) * t;
+    const int e = expectExact(a, b, c, d, "seed 9102 nearly coplanar #" + std::to_string(i), failures);
+    (e == 0 ? zeros : nonzeros)++;
+  }
+  EXPECT_EQ(failures, 0);
+  // Rounding d almost always leaves it just off the plane (|det| far below the fast
+  // filter's error bound, so the exact path decides); exact zeros are covered by the
+  // degenerate and ulp-grid tests.
+  std::printf("    nearly coplanar: %d exact zeros, %d non-zero\n", zeros, nonzeros);
+  EXPECT_GT(nonzeros, 0);
+}
+
+TYPED_TEST(Orient3d, UlpPerturbationsOfAPlane) {
+  using T = TypeParam;
+  int failures = 0, signs[3] = {0, 0, 0};
+  // Plane x + y + z = 1 through three exactly representable points; d = an exact point
+  // of it, then moved by -3..3 ulps in each coordinate (Shewchuk's test pattern).
+  const Vec3<T> a(T(1), T(0), T(0)), b(T(0), T(1), T(0)), c(T(0), T(0), T(1));
+  for (const Vec3<T>& base : {Vec3<T>(T(0.25), T(0.5), T(0.25)), Vec3<T>(T(0.375), T(0.125), T(0.5)),
+                             Vec3<T>(T(-3), T(2.5), T(1.5)), Vec3<T>(T(1024), T(-1000), T(-23))}) {
+    for (int i = -3; i <= 3; ++i)
+      for (int j = -3; j <= 3; ++j)
+        for (int k = -3; k <= 3; ++k) {
+          Vec3<T> d = base;
+          const int steps[3] = {i, j, k};
+          for (int q = 0; q < 3; ++q)
+            for (int n = 0; n < std::abs(steps[q]); ++n)
+              d[q] = std::nextafter(d[q], steps[q] > 0 ? std::numeric_limits<T>::infinity()
+                                                       : -std::numeric_limits<T>::infinity());
+          const int e = expectExact(a, b, c, d, "ulp grid (" + std::to_string(i) + "," + std::to_string(j) + "," +
+                                                    std::to_string(k) + ") around " + str(base),
+                                    failures);
+          ++signs[e + 1];
+        }
+  }
+  EXPECT_EQ(failures, 0);
+  EXPECT_GT(signs[0], 0);
+  EXPECT_GT(signs[1], 0);
+  EXPECT_GT(signs[2], 0);
+}
+
+TYPED_TEST(Orient3d, DegenerateConfigurations) {
+  using T = TypeParam;
+  const unsigned seed = 9104u;
+  std::mt19937 rng(seed);
+  int failures = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const auto a = randomPoint<T>(rng), b = randomPoint<T>(rng);
+    // Coincident points and exact dyadic points on the line ab (midpoint, reflection
+    // when exact): the determinant is 0 whatever c is.
+    const auto c = randomPoint<T>(rng);
+    EXPECT_EQ(mink::orient3d(a, a, c, b), 0);
+    EXPECT_EQ(mink::orient3d(a, b, c, c), 0);
+    EXPECT_EQ(mink::orient3d(a, b, a, c), 0);
+    const Vec3<T> m = (a + b) / T(2);  // rounded: usually off the line by an ulp
+    expectExact(a, b, m, c, "seed 9104 midpoint #" + std::to_string(i), failures);
+    expectExact(a, m, b, c, "seed 9104 midpoint (2) #" + std::to_string(i), failures);
+  }
+  // Integer points exactly on a plane, at a scale where the naive determinant
+  // cancels catastrophically: 2^k (x, y, 3x - 2y + 5) with large k.
+  std::uniform_int_distribution<int> small(-1000, 1000);
+  for (int i = 0; i < 2000; ++i) {
+    Vec3<T> p[4];
+    for (auto& q : p) {
+      const int x = small(rng), y = small(rng);
+      q = Vec3<T>(T(x), T(y), T(3 * x - 2 * y + 5));
+    }
+    EXPECT_EQ(exactSign(p[0], p[1], p[2], p[3]), 0);
+    expectExact(p[0], p[1], p[2], p[3], "seed 9104 integer coplanar #" + std::to_string(i), failures);
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+TYPED_TEST(Orient3d, ExtremeScales) {
+  using T = TypeParam;
+  const unsigned seed = 9105u;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> st(-2.0, 2.0);
+  int failures = 0;
+  // Scaling by a power of two is exact and keeps the sign; stay inside the documented
+  // range (about 1e-90 .. 1e90 for double; float's own range for float).
+  const int emax = std::is_same<T, float>::value ? 30 : 250;
+  for (int e : {-emax, -emax / 2, 0, emax / 2, emax}) {
+    for (int i = 0; i < 2000; ++i) {
+      const auto a = randomPoint<T>(rng), b = randomPoint<T>(rng), c = randomPoint<T>(rng);
+      const T s = T(st(rng)), t = T(st(rng));
+      Vec3<T> d = a + (b - a) * s + (c - a) * t;
+      Vec3<T> pts[4] = {a, b, c, d};
+      for (auto& q : pts)
+        for (int k = 0; k < 3; ++k) q[k] = std::ldexp(q[k], e);
+      expectExact(pts[0], pts[1], pts[2], pts[3], "seed 9105 scale 2^" + std::to_string(e) + " #" + std::to_string(i),
+                  failures);
+    }
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+TEST(Orient3dExact, Gmpq) {
+  const unsigned seed = 9106u;
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> num(-1000, 1000), den(1, 99);
+  auto rnd = [&] { return Q(num(rng), den(rng)); };
+  int failures = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3<Q> a(rnd(), rnd(), rnd()), b(rnd(), rnd(), rnd()), c(rnd(), rnd(), rnd());
+    const Vec3<Q> d(rnd(), rnd(), rnd());
+    expectExact(a, b, c, d, "seed 9106 generic #" + std::to_string(i), failures);
+    // Exactly on the plane: 0.
+    const Vec3<Q> e = a + (b - a) * rnd() + (c - a) * rnd();
+    EXPECT_EQ(mink::orient3d(a, b, c, e), 0) << "seed 9106 coplanar #" << i;
+    expectExact(a, b, c, Vec3<Q>(e + Vec3<Q>(Q(0), Q(0), Q(1, 1000000007))), "seed 9106 just off #" + std::to_string(i),
+                failures);
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+TEST(Orient3dExact, SignConvention) {
+  // d on the side (b - a) x (c - a) points to is positive.
+  const Vec3<double> a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  EXPECT_EQ(mink::orient3d(a, b, c, Vec3<double>(0.3, 0.3, 1e-30)), 1);
+  EXPECT_EQ(mink::orient3d(a, b, c, Vec3<double>(0.3, 0.3, -2.0)), -1);
+  EXPECT_EQ(mink::orient3d(a, b, c, Vec3<double>(5.0, -7.0, 0.0)), 0);
+}
+
+}  // namespace
