@@ -54,6 +54,31 @@ void checkPose(const Pose<T>& pose, const char* name) {
     throw InvalidInput(std::string("mdd: ") + name + ".rotation is a reflection (determinant < 0)");
 }
 
+/// Q's placement in P's frame (R, t) and P's world-to-local rotation RPt, after checking
+/// both poses; resets the cache's hints when it last served another pair of shapes.
+template <class T>
+struct RelativePose {
+  Mat3<T> RPt, R;
+  Vec3<T> t;
+};
+
+template <class T>
+RelativePose<T> relativePose(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                             const Pose<T>& poseQ, MddCache<T>& cache) {
+  checkPose(poseP, "poseP");
+  checkPose(poseQ, "poseQ");
+  if (cache.shapeP != &P || cache.shapeQ != &Q) {
+    cache.faceP = cache.vertexP = cache.vertexQ = -1;
+    cache.shapeP = &P;
+    cache.shapeQ = &Q;
+  }
+  RelativePose<T> rel;
+  rel.RPt = poseP.rotation.transpose();
+  rel.R = rel.RPt * poseQ.rotation;
+  rel.t = rel.RPt * (poseQ.translation - poseP.translation);
+  return rel;
+}
+
 template <class T>
 class MddQuery {
  public:
@@ -283,16 +308,10 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
   for (int i = 0; i < 3; ++i)
     if (!ScalarTraits<T>::isFinite(s[i])) throw InvalidInput("mdd: direction s is not finite");
   if (s == Vec3<T>::Zero()) throw InvalidInput("mdd: direction s is zero");
-  detail::checkPose(poseP, "poseP");
-  detail::checkPose(poseQ, "poseQ");
-  if (cache.shapeP != &P || cache.shapeQ != &Q) {
-    cache.faceP = cache.vertexP = cache.vertexQ = -1;
-    cache.shapeP = &P;
-    cache.shapeQ = &Q;
-  }
-  const Mat3<T> RPt = poseP.rotation.transpose();
-  const Mat3<T> R = RPt * poseQ.rotation;
-  const Vec3<T> t = RPt * (poseQ.translation - poseP.translation);
+  const detail::RelativePose<T> rel = detail::relativePose(P, poseP, Q, poseQ, cache);
+  const Mat3<T>& RPt = rel.RPt;
+  const Mat3<T>& R = rel.R;
+  const Vec3<T>& t = rel.t;
   const Vec3<T> sl = RPt * s;
   detail::PairFrame<T> F(P, Q, R, t, options.useHierarchy);
   MddResult<T> res;
@@ -411,16 +430,10 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
 template <class T>
 bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                 const Pose<T>& poseQ, MddCache<T>& cache) {
-  detail::checkPose(poseP, "poseP");
-  detail::checkPose(poseQ, "poseQ");
-  if (cache.shapeP != &P || cache.shapeQ != &Q) {
-    cache.faceP = cache.vertexP = cache.vertexQ = -1;
-    cache.shapeP = &P;
-    cache.shapeQ = &Q;
-  }
-  const Mat3<T> RPt = poseP.rotation.transpose();
-  const Mat3<T> R = RPt * poseQ.rotation;
-  const Vec3<T> t = RPt * (poseQ.translation - poseP.translation);
+  const detail::RelativePose<T> rel = detail::relativePose(P, poseP, Q, poseQ, cache);
+  const Mat3<T>& RPt = rel.RPt;
+  const Mat3<T>& R = rel.R;
+  const Vec3<T>& t = rel.t;
   detail::PairFrame<T> F(P, Q, R, t, true);
   const Vec3<T> x0 = P.interiorPoint() - (R * Q.interiorPoint() + t);
   if (x0 == Vec3<T>::Zero()) return true;
