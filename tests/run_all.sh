@@ -19,31 +19,10 @@ jobs="${MINK_JOBS:-$(nproc)}"
 packages=(cmake ninja-build g++ libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev
           libgtest-dev libfcl-dev libccd-dev libbenchmark-dev libbullet-dev python3-matplotlib)
 
-ensure_packages() {
-  if ! command -v dpkg-query >/dev/null 2>&1; then
-    echo "run_all.sh: not a Debian system; make sure these are installed: ${packages[*]}" >&2
-    return 0
-  fi
-  local missing=() p
-  for p in "${packages[@]}"; do
-    if [[ "$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)" != "install ok installed" ]]; then
-      missing+=("$p")
-    fi
-  done
-  ((${#missing[@]} == 0)) && return 0
-  if [[ "$(id -u)" == 0 ]]; then
-    echo "run_all.sh: installing ${missing[*]}"
-    export DEBIAN_FRONTEND=noninteractive
-    apt-get update
-    apt-get install -y --no-install-recommends "${missing[@]}"
-  else
-    echo "run_all.sh: missing packages: ${missing[*]}" >&2
-    echo "run_all.sh: install them with: sudo apt-get install ${missing[*]}" >&2
-    echo "run_all.sh: trying anyway (they may be installed outside dpkg)" >&2
-  fi
-}
+# shellcheck source=../cmake/ensure_debian_packages.sh
+source "$repo/cmake/ensure_debian_packages.sh"
 
-ensure_packages
+ensure_debian_packages run_all.sh "${packages[@]}"
 
 echo "== run_all.sh: Release build and tests in $root/build"
 cmake -S "$repo" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release
