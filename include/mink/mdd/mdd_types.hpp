@@ -38,9 +38,9 @@ struct MddOptions {
   /// Negative: automatic, defaults::kMddTouchToleranceFactor * eps * (extent(P) +
   /// extent(Q) + |relative translation|) for inexact T; always 0 for exact T.
   T touchTolerance = T(-1);
-  /// Cap on faces of M visited by one search; negative: automatic,
-  /// defaults::kMddIterationFactor * (faces(P) + faces(Q) + 16)... plus the EE pairs
-  /// an exhaustive fallback may need. Reaching it yields MddStatus::IterationLimit.
+  /// Cap on the candidate faces of M one search (one direction, all three phases)
+  /// evaluates; negative: automatic, defaults::kMddVisitFactor * (faces(P) + faces(Q) +
+  /// 64). Reaching it yields MddStatus::IterationLimit.
   long long maxVisits = -1;
   /// Use Dobkin–Kirkpatrick hierarchies for cold support queries on large shapes.
   bool useHierarchy = true;

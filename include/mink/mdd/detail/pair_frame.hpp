@@ -85,9 +85,9 @@ class PairFrame {
   }
 
   /// The EE face of edges ep (of P) and eq (of Q) if their arcs on G(P) and G(−Q) cross
-  /// properly; otherwise an invalid face. `degenerateToo` also accepts touching arcs
-  /// (then the plane through the edges is still a supporting plane of M when valid,
-  /// which the caller must check by support queries — see exhaustive search).
+  /// properly; otherwise an invalid face. Touching arcs (Degenerate) are skipped: a facet
+  /// of M whose support sets are not two crossing edges is an FV or VF face, or a span of
+  /// them, which the facet check in mdd.hpp covers.
   MFace<T> ee(int ep, int eq) const {
     MFace<T> m;
     const auto fp = P_.edgeFaces(ep);
