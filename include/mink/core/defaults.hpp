@@ -60,5 +60,15 @@ constexpr long long kMddVisitFactor = 4;
 /// iterations times (vertices(P) + vertices(Q) + 16). Unit: multiple. Safe range: >= 1.
 constexpr long long kMddPortalFactor = 2;
 
+/// MDD: support queries the exit-portal estimate (mdd/exit_portal.hpp) may make before
+/// the searches start from its best normal so far. It only seeds the searches, so a cap
+/// costs time, never correctness. Unit: support queries on M. Safe range: >= 4.
+constexpr int kMddExitPortalSteps = 48;
+
+/// MDD, inexact scalars: an edge pair of P and Q whose directions make a sine below this
+/// many eps is treated as parallel (no EE face): its cross product is rounding noise.
+/// Unit: multiples of eps. Safe range: 4 .. 1e4.
+constexpr double kMddParallelEdgeFactor = 64.0;
+
 }  // namespace defaults
 }  // namespace mink

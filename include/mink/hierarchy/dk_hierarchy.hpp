@@ -63,6 +63,7 @@
 #include "mink/core/defaults.hpp"
 #include "mink/core/error.hpp"
 #include "mink/core/types.hpp"
+#include "mink/hierarchy/support_seeds.hpp"
 #include "mink/polyhedron/convex_polyhedron.hpp"
 
 namespace mink {
@@ -173,7 +174,8 @@ const DKHierarchy<T>* hierarchyOf(const ConvexPolyhedron<T>& P);
 
 /// An ORIGINAL vertex of P maximising d.x. With hint >= 0: hill-climb from that vertex
 /// (warm start, best when d changes little between calls); otherwise the hierarchy when
-/// P has one (see hierarchyOf), else a hill-climb from vertex 0.
+/// P has one (see hierarchyOf), else a hill-climb from the nearest of 26 precomputed
+/// directions' support vertices (support_seeds.hpp).
 template <class T>
 int extremeVertex(const ConvexPolyhedron<T>& P, const Vec3<T>& d, int hint = -1);
 

@@ -72,8 +72,10 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
   // Support point of M along the 3-D direction of the 2-D direction d.
   auto support = [&](const Pt2<T>& d) {
     const Vec3<T> D = lift(d);
-    hintP = F.supportP(D, hintP);
-    hintQ = F.supportMinusQ(D, hintQ);
+    // The portal's directions jump around the circle: on large shapes the hierarchy's
+    // O(log n) beats a hill-climb from the last vertex.
+    hintP = F.supportPFar(D, hintP);
+    hintQ = F.supportMinusQFar(D, hintQ);
     return Vec3<T>(F.P().vertex(hintP) - F.q(hintQ));
   };
   auto boundary = [&](const Pt2<T>& d) {

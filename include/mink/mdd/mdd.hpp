@@ -26,6 +26,7 @@
 
 #include "mink/core/defaults.hpp"
 #include "mink/mdd/centre_of_duality.hpp"
+#include "mink/mdd/exit_portal.hpp"
 #include "mink/mdd/detail/contact_set.hpp"
 #include "mink/mdd/search_ee.hpp"
 #include "mink/mdd/search_fv.hpp"
@@ -69,11 +70,15 @@ RelativePose<T> relativePose(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
   checkPose(poseQ, "poseQ");
   if (cache.shapeP != &P || cache.shapeQ != &Q) {
     cache.faceP = cache.vertexP = cache.vertexQ = -1;
+    cache.exitFaces[0] = cache.exitFaces[1] = MddCachedFace{};
     cache.shapeP = &P;
     cache.shapeQ = &Q;
   }
   RelativePose<T> rel;
-  rel.RPt = poseP.rotation.transpose();
+  // P's inverse rotation, not its transpose: the two differ when the matrix is a rotation
+  // only up to rounding, and the inverse keeps the answer the exact one for the shapes
+  // as placed by the matrices given.
+  rel.RPt = poseP.rotation.inverse();
   rel.R = rel.RPt * poseQ.rotation;
   rel.t = rel.RPt * (poseQ.translation - poseP.translation);
   return rel;
@@ -99,11 +104,23 @@ class MddQuery {
     const auto b = orthogonalBasis(s);
     u1_ = b.first;
     u2_ = b.second;
+    if constexpr (!ScalarTraits<T>::isExact) {
+      // Unit vectors, so that the facet check's slack is a length.
+      u1_.normalize();
+      u2_.normalize();
+    }
   }
 
   /// The face of M through which the ray c + u σ (u > 0) leaves M. Invalid on a cap.
   /// With `earlyExit` (collision mode), stops with an invalid face and `separated` set as
   /// soon as a face proves the origin outside M.
+  ///
+  /// Directional mode: the exit-portal estimate (exit_portal.hpp) names a normal close to
+  /// the exit facet's; the FV and VF faces best aligned with it at its support vertices,
+  /// then the EE faces of the edges at those vertices, are tried first, and the first
+  /// that passes the facet check is the answer (a supporting plane of M whose facet the
+  /// line crosses is where the ray leaves M: no search can do better). Otherwise the
+  /// paper's three searches run from those faces.
   MFace<T> exitFace(const Vec3<T>& sigma, const Vec3<T>& c, bool earlyExit = false, bool* separated = nullptr) {
     const ConvexPolyhedron<T>& P = F_.P();
     const ConvexPolyhedron<T>& Q = F_.Q();
@@ -117,15 +134,45 @@ class MddQuery {
     SearchBudget budget{cap_, false};
     int& hintP = cache_.vertexP;
     int& hintQ = cache_.vertexQ;
-    // Initial face (section VI-A): around P's support vertex along σ, or the cached one.
-    int f0 = cache_.faceP;
-    if (f0 < 0 || f0 >= P.numFaces()) {
-      hintP = F_.supportP(sigma, hintP);
-      f0 = P.vertexFaces(hintP)[0];
+    int f0 = -1, g0 = -1;
+    if (!earlyExit) {
+      const ExitPortal<T> est = exitPortal(F_, c, sigma, hintP, hintQ);
+      res_.portalSteps += est.steps;
+      f0 = alignedFaceP(est.vertexP, est.normal);
+      g0 = alignedFaceQ(est.vertexQ, est.normal);
+      int hq = est.vertexQ, hp = est.vertexP;
+      if (!budget.take() || !budget.take()) return MFace<T>();
+      const MFace<T> fv = F_.fv(f0, hq);
+      const MFace<T> vf = F_.vf(g0, hp);
+      res_.visitedFV += 1;
+      res_.visitedVF += 1;
+      const MFace<T> best = obj.better(vf, fv) ? vf : fv;
+      if (obj.num(best) > T(0) && faceHit(best)) return remember(best);
+      cache_.edgesP.clear();
+      cache_.edgesQ.clear();
+      edgesAround(P, est.vertexP, cache_.edgesP);
+      edgesAround(Q, est.vertexQ, cache_.edgesQ);
+      MFace<T> bestEE;
+      for (int ep : cache_.edgesP)
+        for (int eq : cache_.edgesQ) {
+          if (!budget.take()) return MFace<T>();
+          const MFace<T> m = F_.ee(ep, eq);
+          if (!m.valid()) continue;
+          ++res_.visitedEE;
+          if (obj.better(m, bestEE)) bestEE = m;
+        }
+      if (obj.num(bestEE) > T(0) && obj.better(bestEE, best) && faceHit(bestEE)) return remember(bestEE);
+    } else {
+      // Initial face (section VI-A): around P's support vertex along σ, or the cached one.
+      f0 = cache_.faceP;
+      if (f0 < 0 || f0 >= P.numFaces()) {
+        hintP = F_.supportP(sigma, hintP);
+        f0 = P.vertexFaces(hintP)[0];
+      }
     }
     const MFace<T> fv = searchFV(F_, obj, f0, hintQ, cache_.marksP, budget, res_.visitedFV);
     if (stopped()) return MFace<T>();
-    const int g0 = Q.vertexFaces(fv.b)[0];
+    if (g0 < 0) g0 = Q.vertexFaces(fv.b)[0];
     const MFace<T> vf = searchVF(F_, obj, g0, hintP, cache_.marksQ, budget, res_.visitedVF);
     if (stopped()) return MFace<T>();
     const MFace<T>& start = obj.better(vf, fv) ? vf : fv;
@@ -138,7 +185,29 @@ class MddQuery {
       if (stopped() || !best.valid() || !facetHit(best)) return MFace<T>();
     }
     cache_.faceP = best.type == MddFaceType::FV ? best.a : fv.a;
-    return best;
+    return remember(best);
+  }
+
+  /// The face of M named by a cached (type, a, b), rebuilt for the current pose (its
+  /// support vertex re-found from the cached one); invalid if it is no face of M now.
+  MFace<T> rebuild(const MddCachedFace& cf) {
+    int h;
+    switch (cf.type) {
+      case MddFaceType::FV:
+        if (cf.a < 0 || cf.a >= F_.P().numFaces() || cf.b < 0 || cf.b >= F_.Q().numVertices()) break;
+        h = cf.b;
+        return F_.fv(cf.a, h);
+      case MddFaceType::VF:
+        if (cf.b < 0 || cf.b >= F_.Q().numFaces() || cf.a < 0 || cf.a >= F_.P().numVertices()) break;
+        h = cf.a;
+        return F_.vf(cf.b, h);
+      case MddFaceType::EE:
+        if (cf.a < 0 || cf.a >= F_.P().numEdges() || cf.b < 0 || cf.b >= F_.Q().numEdges()) break;
+        return F_.ee(cf.a, cf.b);
+      default:
+        break;
+    }
+    return MFace<T>();
   }
 
   /// Every FV, VF and EE face of M (each facet of M is one of them: its support sets are
@@ -168,6 +237,36 @@ class MddQuery {
     return best;
   }
 
+  /// Does the line {t s} cross the face m itself (its own features, no tolerance: FV is
+  /// f_p − v_q, VF is v_p − f_q, EE is e_p − e_q)? A stricter test than facetHit (the
+  /// face is part of the facet), used where a face is accepted without a search, so that
+  /// no tolerance can let a neighbouring face's plane answer. Fills the witnesses.
+  bool faceHit(const MFace<T>& m) {
+    const ConvexPolyhedron<T>& P = F_.P();
+    const ConvexPolyhedron<T>& Q = F_.Q();
+    cache_.setP.clear();
+    cache_.setQ.clear();
+    switch (m.type) {
+      case MddFaceType::FV:
+        for (int v : P.faceVertices(m.a)) cache_.setP.push_back(v);
+        cache_.setQ.push_back(m.b);
+        break;
+      case MddFaceType::VF:
+        cache_.setP.push_back(m.a);
+        for (int v : Q.faceVertices(m.b)) cache_.setQ.push_back(v);
+        break;
+      case MddFaceType::EE:
+        cache_.setP.push_back(P.edgeVertices(m.a).first);
+        cache_.setP.push_back(P.edgeVertices(m.a).second);
+        cache_.setQ.push_back(Q.edgeVertices(m.b).first);
+        cache_.setQ.push_back(Q.edgeVertices(m.b).second);
+        break;
+      default:
+        return false;
+    }
+    return hitSets(T(0));
+  }
+
   /// Does the line {t s} cross the facet of M in face m's plane? Fills the witnesses
   /// (frame of P) when it does.
   bool facetHit(const MFace<T>& m) {
@@ -195,6 +294,12 @@ class MddQuery {
     if constexpr (!ScalarTraits<T>::isExact) eps = tol_ * N.norm();
     supportSet(P, vp, [&](int v) { return T(N.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
     supportSet(Q, vq, [&](int v) { return T(-N.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
+    return hitSets(tol_);
+  }
+
+  /// Does the line cross (within `slack`) the hull of setP − setQ? Fills the witnesses.
+  bool hitSets(const T& slack) {
+    const ConvexPolyhedron<T>& P = F_.P();
     cache_.points2.clear();
     for (std::size_t i = 0; i < cache_.setP.size(); ++i)
       for (std::size_t j = 0; j < cache_.setQ.size(); ++j) {
@@ -202,7 +307,7 @@ class MddQuery {
         cache_.points2.push_back({{y.dot(u1_), y.dot(u2_)}, static_cast<int>(i * cache_.setQ.size() + j)});
       }
     OriginLocation<T> loc;
-    if (!locateOrigin2(cache_.points2, cache_.hull2, loc)) return false;
+    if (!locateOrigin2(cache_.points2, cache_.hull2, loc, slack)) return false;
     wP_ = Vec3<T>::Zero();
     wQ_ = Vec3<T>::Zero();
     for (int i = 0; i < loc.count; ++i) {
@@ -255,11 +360,49 @@ class MddQuery {
     return true;
   }
 
+  /// The face of P at vertex v whose normal is closest in angle to n, and of Q at
+  /// vertex w whose VF face normal (−R n_q) is: the start faces for FV and VF.
+  int alignedFaceP(int v, const Vec3<T>& n) const {
+    int best = -1;
+    T bd = T(0), bl = T(1);
+    for (int f : F_.P().vertexFaces(v)) {
+      const Vec3<T>& nf = F_.P().faceNormal(f);
+      const T d = nf.dot(n), l = nf.squaredNorm();
+      if (best < 0 || cosineGreater(d, l, bd, bl)) best = f, bd = d, bl = l;
+    }
+    return best;
+  }
+  int alignedFaceQ(int w, const Vec3<T>& n) const {
+    const Vec3<T> nl = F_.R().transpose() * n;
+    int best = -1;
+    T bd = T(0), bl = T(1);
+    for (int g : F_.Q().vertexFaces(w)) {
+      const Vec3<T>& ng = F_.Q().faceNormal(g);
+      const T d = -ng.dot(nl), l = ng.squaredNorm();
+      if (best < 0 || cosineGreater(d, l, bd, bl)) best = g, bd = d, bl = l;
+    }
+    return best;
+  }
+
   const Vec3<T>& witnessP() const { return wP_; }
   const Vec3<T>& witnessQ() const { return wQ_; }
   const T& tolerance() const { return tol_; }
 
  private:
+  /// d1/√l1 > d2/√l2 without square roots (l1, l2 > 0).
+  static bool cosineGreater(const T& d1, const T& l1, const T& d2, const T& l2) {
+    if ((d1 >= T(0)) != (d2 >= T(0))) return d1 >= T(0);
+    const T a = d1 * d1 * l2, b = d2 * d2 * l1;
+    return d1 >= T(0) ? a > b : a < b;
+  }
+  /// Keeps the last two exit faces in the cache (a penetrating query has two), to be
+  /// certified first by the next query of the pair.
+  const MFace<T>& remember(const MFace<T>& f) {
+    cache_.exitFaces[1] = cache_.exitFaces[0];
+    cache_.exitFaces[0] = MddCachedFace{f.type, f.a, f.b};
+    return f;
+  }
+
   const PairFrame<T>& F_;
   Vec3<T> s_;
   MddCache<T>& cache_;
@@ -341,6 +484,46 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
     return res;
   };
 
+  // Frame coherence: if the faces that ended the last query still bound the line (each
+  // a supporting plane of M whose facet the line crosses), they give the answer.
+  {
+    detail::MFace<T> lo, hi;
+    T tlo = T(0), thi = T(0);
+    for (const MddCachedFace& cf : cache.exitFaces) {
+      const detail::MFace<T> m = query.rebuild(cf);
+      if (!m.valid()) continue;
+      const T ns = m.N.dot(sl);
+      if (ns == T(0) || (ns > T(0) ? hi.valid() : lo.valid())) continue;
+      (m.type == MddFaceType::FV ? res.visitedFV : m.type == MddFaceType::VF ? res.visitedVF : res.visitedEE) += 1;
+      if (!query.faceHit(m)) continue;
+      (ns > T(0) ? hi : lo) = m;
+      (ns > T(0) ? thi : tlo) = m.k / ns;
+    }
+    const detail::MFace<T>* answer = nullptr;
+    if (lo.valid() && tlo > T(0)) {
+      answer = &lo;  // the whole line's stretch in M lies ahead: separated
+      res.status = MddStatus::Separated;
+    } else if (hi.valid() && thi < T(0)) {
+      answer = &hi;
+      res.status = MddStatus::Separated;
+    } else if (lo.valid() && hi.valid()) {
+      answer = detail::absValue(tlo) < detail::absValue(thi) ? &lo : &hi;  // tie: +s
+      res.status = MddStatus::Penetrating;
+    }
+    if (answer) {
+      query.faceHit(*answer);  // its witnesses
+      res.faceType = answer->type;
+      res.featureP = answer->a;
+      res.featureQ = answer->b;
+      res.normal = detail::unitOrExact(Vec3<T>(RPt.transpose() * answer->N));
+      res.witnessP = toWorld(query.witnessP());
+      res.witnessQ = toWorld(query.witnessQ());
+      res.fromCache = true;
+      return finish(answer->k / answer->N.dot(sl));
+    }
+    res.visitedFV = res.visitedVF = res.visitedEE = 0;
+  }
+
   int hp = cache.vertexP, hq = cache.vertexQ;
   const CentreOfDuality<T> cd = centreOfDuality(F, sl, hp, hq);
   cache.vertexP = hp;
@@ -358,7 +541,7 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
     res.faceType = MddFaceType::Grazing;
     res.featureP = vp;
     res.featureQ = vq;
-    res.normal = RPt.transpose() * detail::unitOrExact(cd.w);
+    res.normal = detail::unitOrExact(Vec3<T>(RPt.transpose() * cd.w));
     const T param = (tlo <= T(0) && thi >= T(0)) ? T(0) : (tlo > T(0) ? tlo : thi);
     // Witnesses: the contact is on the facet; report the support vertices' pair moved
     // onto the line (exact contact points need the segment, which a caller rarely uses).
@@ -375,7 +558,7 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
     res.faceType = f.type;
     res.featureP = f.a;
     res.featureQ = f.b;
-    res.normal = poseP.rotation * detail::unitOrExact(f.N);
+    res.normal = detail::unitOrExact(Vec3<T>(RPt.transpose() * f.N));
     res.witnessP = toWorld(query.witnessP());
     res.witnessQ = toWorld(query.witnessQ());
   };
@@ -431,7 +614,6 @@ template <class T>
 bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                 const Pose<T>& poseQ, MddCache<T>& cache) {
   const detail::RelativePose<T> rel = detail::relativePose(P, poseP, Q, poseQ, cache);
-  const Mat3<T>& RPt = rel.RPt;
   const Mat3<T>& R = rel.R;
   const Vec3<T>& t = rel.t;
   detail::PairFrame<T> F(P, Q, R, t, true);

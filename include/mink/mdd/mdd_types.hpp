@@ -76,31 +76,22 @@ struct MddResult {
   /// True when the local search's answer failed its check (the hit point must lie in the
   /// face found) and the exhaustive search over all FV, VF and EE faces answered instead.
   bool usedFallback = false;
+  /// Support queries on M made by the exit-portal estimates (mdd/exit_portal.hpp), the
+  /// starting points of the searches; 0 when a cached face answered.
+  int portalSteps = 0;
+  /// True when the faces kept in the MddCache from the last query answered this one
+  /// (each certified by the facet check), without the centre of duality or any search.
+  bool fromCache = false;
+};
+
+/// A face of M named by its features, as kept between queries: FV (face of P, vertex of
+/// Q), VF (vertex of P, face of Q) or EE (edge of P, edge of Q).
+struct MddCachedFace {
+  MddFaceType type = MddFaceType::None;
+  int a = -1, b = -1;
 };
 
 namespace detail {
-/// Marks with an epoch counter: clearing is O(1), no allocation once sized.
-class EpochMarks {
- public:
-  void reset(std::size_t n) {
-    if (stamp_.size() < n) stamp_.resize(n, 0);
-    if (++epoch_ == 0) {
-      std::fill(stamp_.begin(), stamp_.end(), 0u);
-      epoch_ = 1;
-    }
-  }
-  /// True if i was not marked yet (and marks it).
-  bool mark(int i) {
-    if (stamp_[i] == epoch_) return false;
-    stamp_[i] = epoch_;
-    return true;
-  }
-
- private:
-  std::vector<std::uint32_t> stamp_;
-  std::uint32_t epoch_ = 0;
-};
-
 /// Open-addressing set of int pairs with epoch clearing (visited EE faces, section VI-D).
 class PairMarks {
  public:
@@ -152,6 +143,18 @@ class PairMarks {
   std::uint32_t epoch_ = 0;
   std::size_t count_ = 0;
 };
+/// Marks on ids (faces or vertices of one shape) with the same O(1) clearing. Hashed,
+/// not an array indexed by id: a query touches a few dozen ids, and sizing an array to a
+/// 100k-vertex shape would cost a cold query (no cache kept) O(n) time and memory.
+class EpochMarks {
+ public:
+  void reset(std::size_t /*ids*/) { set_.reset(); }
+  /// True if i was not marked yet (and marks it).
+  bool mark(int i) { return set_.mark(i, 0); }
+
+ private:
+  PairMarks set_;
+};
 }  // namespace detail
 
 /// Per-pair state a caller may keep between queries (frame coherence, section VI-E):
@@ -164,6 +167,8 @@ struct MddCache {
   int faceP = -1;    ///< seed face of P for SEARCH-FV
   int vertexP = -1;  ///< last support vertex of P
   int vertexQ = -1;  ///< last support vertex of Q
+  /// The last exit faces found (the two ends of the line for a penetrating query).
+  MddCachedFace exitFaces[2];
   const void* shapeP = nullptr;  ///< identity of the shapes the hints belong to
   const void* shapeQ = nullptr;
   detail::EpochMarks marksP, marksQ;

@@ -69,7 +69,7 @@ struct DerivedSlot {
   std::shared_ptr<const void> value;
 };
 struct DerivedSlots {
-  enum Id { kHierarchy = 0, kCount };
+  enum Id { kHierarchy = 0, kSupportSeeds, kCount };
   DerivedSlot slot[kCount];
 };
 }  // namespace detail

@@ -293,7 +293,7 @@ template <class T>
 int extremeVertex(const ConvexPolyhedron<T>& P, const Vec3<T>& d, int hint) {
   if (hint >= 0) return P.support(d, hint);
   if (const DKHierarchy<T>* H = hierarchyOf(P)) return H->support(d);
-  return P.support(d, 0);
+  return P.support(d, seedVertex(P, d));
 }
 
 }  // namespace mink

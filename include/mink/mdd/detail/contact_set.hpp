@@ -38,7 +38,10 @@ int orient2(const std::pair<T, T>& a, const std::pair<T, T>& b, const std::pair<
 
 /// Where the origin lies in the closed convex hull of 2-D points `pts` (ids carried
 /// along): false if outside; else up to three ids and non-negative weights summing to 1
-/// whose combination of the points is the origin (exact for exact T).
+/// whose combination of the points is the origin (exact for exact T). With slack > 0
+/// (inexact T; coordinates in units of length), an origin outside the hull but within
+/// `slack` of it also counts, located at the nearest point of the hull: a line through a
+/// vertex or along an edge of M lands there only up to rounding, on every facet around it.
 template <class T>
 struct OriginLocation {
   int count = 0;
@@ -47,8 +50,8 @@ struct OriginLocation {
 };
 
 template <class T>
-bool locateOrigin2(std::vector<std::pair<std::pair<T, T>, int>>& pts, std::vector<std::pair<std::pair<T, T>, int>>& h,
-                   OriginLocation<T>& loc) {
+bool locateOrigin2Strict(std::vector<std::pair<std::pair<T, T>, int>>& pts,
+                         std::vector<std::pair<std::pair<T, T>, int>>& h, OriginLocation<T>& loc) {
   using P2 = std::pair<T, T>;
   std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   pts.erase(std::unique(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
@@ -111,6 +114,34 @@ bool locateOrigin2(std::vector<std::pair<std::pair<T, T>, int>>& pts, std::vecto
     return true;
   }
   return false;
+}
+
+template <class T>
+bool locateOrigin2(std::vector<std::pair<std::pair<T, T>, int>>& pts, std::vector<std::pair<std::pair<T, T>, int>>& h,
+                   OriginLocation<T>& loc, const T& slack = T(0)) {
+  if (locateOrigin2Strict(pts, h, loc)) return true;
+  if (!(slack > T(0)) || h.empty()) return false;
+  // Nearest point of the hull's boundary (h: its vertices in order, after the call).
+  T best = T(-1);
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const auto& a = h[i];
+    const auto& b = h[(i + 1) % h.size()];
+    const T dx = b.first.first - a.first.first, dy = b.first.second - a.first.second;
+    const T len2 = dx * dx + dy * dy;
+    T l = T(0);
+    if (len2 > T(0)) l = std::min(T(1), std::max(T(0), (-a.first.first * dx - a.first.second * dy) / len2));
+    const T px = a.first.first + l * dx, py = a.first.second + l * dy;
+    const T d2 = px * px + py * py;
+    if (best < T(0) || d2 < best) {
+      best = d2;
+      loc.count = 2;
+      loc.id[0] = a.second;
+      loc.id[1] = b.second;
+      loc.weight[0] = T(1) - l;
+      loc.weight[1] = l;
+    }
+  }
+  return best <= slack * slack;
 }
 
 /// Basis (u1, u2) of the plane orthogonal to s, exact for exact T (not unit).

@@ -15,6 +15,7 @@
 
 #include <utility>
 
+#include "mink/core/defaults.hpp"
 #include "mink/gauss_map/arc_intersection.hpp"
 #include "mink/hierarchy/dk_hierarchy.hpp"
 #include "mink/mdd/mdd_types.hpp"
@@ -38,7 +39,14 @@ class PairFrame {
  public:
   PairFrame(const ConvexPolyhedron<T>& P, const ConvexPolyhedron<T>& Q, const Mat3<T>& R,
             const Vec3<T>& t, bool useHierarchy)
-      : P_(P), Q_(Q), R_(R), t_(t), useHierarchy_(useHierarchy) {}
+      : P_(P), Q_(Q), R_(R), t_(t), useHierarchy_(useHierarchy) {
+    // Normals map by the cofactor matrix det(R) R^{-T}: equal to R for a rotation, and
+    // still exactly perpendicular to the mapped faces when R is a rotation only up to
+    // rounding, so planes and vertices stay consistent (det(R) > 0 is checked).
+    C_.col(0) = R.col(1).cross(R.col(2));
+    C_.col(1) = R.col(2).cross(R.col(0));
+    C_.col(2) = R.col(0).cross(R.col(1));
+  }
 
   const ConvexPolyhedron<T>& P() const { return P_; }
   const ConvexPolyhedron<T>& Q() const { return Q_; }
@@ -47,9 +55,7 @@ class PairFrame {
 
   Vec3<T> q(int j) const { return R_ * Q_.vertex(j) + t_; }
   /// Outward normal of Q's face f in P's frame.
-  Vec3<T> qNormal(int f) const { return R_ * Q_.faceNormal(f); }
-  /// Offset of Q's face f in P's frame: qNormal(f)·x == qOffset(f) on it.
-  T qOffset(int f) const { return Q_.faceOffset(f) + qNormal(f).dot(t_); }
+  Vec3<T> qNormal(int f) const { return C_ * Q_.faceNormal(f); }
 
   /// argmax d·p over P's vertices (hint < 0: cold query, hierarchy if worth it).
   int supportP(const Vec3<T>& d, int hint) const {
@@ -60,6 +66,19 @@ class PairFrame {
   int supportMinusQ(const Vec3<T>& d, int hint) const {
     const Vec3<T> dl = -(R_.transpose() * d);
     if (hint >= 0 || !useHierarchy_) return Q_.support(dl, hint < 0 ? 0 : hint);
+    return extremeVertex(Q_, dl);
+  }
+  /// As supportP / supportMinusQ, for a direction far from the hint's: the hierarchy
+  /// when the shape has one (O(log n) whatever the distance), else a hill-climb from the
+  /// nearest seed direction's vertex (support_seeds.hpp); a plain hill-climb from the
+  /// hint when hierarchies are switched off.
+  int supportPFar(const Vec3<T>& d, int hint) const {
+    if (!useHierarchy_) return P_.support(d, hint < 0 ? 0 : hint);
+    return extremeVertex(P_, d);
+  }
+  int supportMinusQFar(const Vec3<T>& d, int hint) const {
+    const Vec3<T> dl = -(R_.transpose() * d);
+    if (!useHierarchy_) return Q_.support(dl, hint < 0 ? 0 : hint);
     return extremeVertex(Q_, dl);
   }
 
@@ -80,7 +99,7 @@ class PairFrame {
     const Vec3<T> nq = qNormal(fq);
     m.N = -nq;
     m.a = hintP = supportP(m.N, hintP);
-    m.k = m.N.dot(P_.vertex(m.a)) + Q_.faceOffset(fq) + nq.dot(t_);
+    m.k = m.N.dot(P_.vertex(m.a) - q(Q_.faceVertices(fq)[0]));
     return m;
   }
 
@@ -102,7 +121,16 @@ class PairFrame {
     const auto vq = Q_.edgeVertices(eq);
     const Vec3<T> p0 = P_.vertex(vp.first);
     const Vec3<T> q0 = q(vq.first);
-    Vec3<T> N = (P_.vertex(vp.second) - p0).cross(q(vq.second) - q0);
+    const Vec3<T> dp = P_.vertex(vp.second) - p0, dq = q(vq.second) - q0;
+    Vec3<T> N = dp.cross(dq);
+    if constexpr (!ScalarTraits<T>::isExact) {
+      // Edges parallel up to rounding (exact quarter turns of symmetric shapes make them
+      // so): N is rounding noise, and so would be the face's plane and its place in the
+      // search order. Such a pair spans no facet of M worth its name; the facets beside
+      // it (FV, VF, or their spans) answer, within the facet check's slack.
+      const T floor = T(defaults::kMddParallelEdgeFactor) * ScalarTraits<T>::epsilon();
+      if (N.squaredNorm() <= floor * floor * dp.squaredNorm() * dq.squaredNorm()) return m;
+    }
     // The crossing direction is a positive combination of a and b (arc_intersection.hpp).
     const Vec3<T> dir = arcIntersectionDirection(a, b, vol);
     const T orient = N.dot(dir);
@@ -119,7 +147,7 @@ class PairFrame {
  private:
   const ConvexPolyhedron<T>& P_;
   const ConvexPolyhedron<T>& Q_;
-  Mat3<T> R_;
+  Mat3<T> R_, C_;
   Vec3<T> t_;
   bool useHierarchy_;
 };

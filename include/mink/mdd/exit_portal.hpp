@@ -1,0 +1,141 @@
+// mink/mdd/exit_portal.hpp — an estimate of the face of M = P ⊕ −Q through which the ray
+// c + u σ (u > 0, c strictly inside M) leaves M, from support queries only. It replaces
+// the initial-face heuristic of MDD-DUAL (Choi et al., seed 000, section VI-A), which
+// starts the searches around P's support vertex along σ and so walks far on large or
+// elongated shapes.
+//
+// Minkowski portal refinement (Snethen, "XenoCollide", Game Programming Gems 7, 2008),
+// run along the ray c + u σ instead of towards the origin:
+//   1. Discovery: support points X1 (along σ), X2, X3 of M whose cone from c holds σ;
+//      while σ leaves the cone across one side, replace the opposite point by the support
+//      point along that side's outer normal.
+//   2. Refinement: the portal triangle X1 X2 X3 is crossed by the ray. Take the support
+//      point X4 along the portal's outer normal n; if it is no further along n than the
+//      portal, the portal's plane supports M and n is the exit facet's normal; else
+//      replace one corner by X4, keeping σ inside the cone, and repeat.
+// For a polytope the refinement ends on the exit facet after finitely many steps; it is
+// also capped (defaults::kMddExitPortalSteps). The estimate is only a starting point:
+// mdd.hpp certifies the face it leads to, or runs the paper's searches from it.
+#pragma once
+
+#include "mink/core/defaults.hpp"
+#include "mink/mdd/detail/pair_frame.hpp"
+
+namespace mink {
+
+template <class T>
+struct ExitPortal {
+  /// Outward normal estimate of the exit facet (frame of P, not normalised).
+  Vec3<T> normal = Vec3<T>::Zero();
+  /// Support vertices of P and of −Q along `normal` (ids on P and on Q).
+  int vertexP = -1, vertexQ = -1;
+  /// Support queries on M made (each is one on P and one on −Q).
+  int steps = 0;
+  /// True when the portal's plane was shown to support M (exact for exact T).
+  bool converged = false;
+};
+
+namespace detail {
+
+/// σ inside the cone spanned by a, b, c (apex at the origin), any orientation
+/// (det3: gauss_map/arc_intersection.hpp).
+template <class T>
+bool coneHolds(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& sigma) {
+  const T o = det3(a, b, c);
+  if (o == T(0)) return false;
+  const T s1 = det3(a, b, sigma), s2 = det3(b, c, sigma), s3 = det3(c, a, sigma);
+  if (o > T(0)) return s1 >= T(0) && s2 >= T(0) && s3 >= T(0);
+  return s1 <= T(0) && s2 <= T(0) && s3 <= T(0);
+}
+
+}  // namespace detail
+
+/// The exit-facet estimate for the ray c + u σ (frame of P). hintP / hintQ: support
+/// vertex hints (in and out).
+template <class T>
+ExitPortal<T> exitPortal(const detail::PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP,
+                         int& hintQ) {
+  struct Corner {
+    Vec3<T> a;  // support point of M minus c
+    int p, q;
+  };
+  ExitPortal<T> out;
+  // Discovery directions jump across the sphere: the hierarchy (when the shape has one)
+  // beats a long hill-climb there; refinement directions move little: hill-climb.
+  auto support = [&](const Vec3<T>& d, bool far) {
+    ++out.steps;
+    hintP = far ? F.supportPFar(d, hintP) : F.supportP(d, hintP);
+    hintQ = far ? F.supportMinusQFar(d, hintQ) : F.supportMinusQ(d, hintQ);
+    return Corner{Vec3<T>(F.P().vertex(hintP) - F.q(hintQ) - c), hintP, hintQ};
+  };
+  auto finish = [&](const Vec3<T>& n, const Corner& at, bool converged) {
+    out.normal = n;
+    out.vertexP = at.p;
+    out.vertexQ = at.q;
+    out.converged = converged;
+    return out;
+  };
+  const int cap = defaults::kMddExitPortalSteps;
+
+  Corner b1 = support(sigma, true);
+  const Vec3<T> m = b1.a.cross(sigma);
+  if (m == Vec3<T>::Zero()) return finish(sigma, b1, false);  // the ray meets a vertex of M
+  Corner x = support(m, true);
+  // det(b1, x, σ) = −m·x < 0, so (x, b1, ·) is the positive order around σ.
+  Corner b3 = support(Vec3<T>(x.a.cross(b1.a)), true);
+  Corner b2 = b1;
+  b1 = x;
+  // Invariant from here: det(b1, b2, b3) > 0 (c strictly inside M makes every support
+  // point strictly beyond c along its direction).
+  while (out.steps < cap) {
+    if (detail::det3(b2.a, b3.a, sigma) < T(0)) {
+      const Vec3<T> n = b3.a.cross(b2.a);
+      if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
+      const Corner y = support(n, true);
+      b1 = y;
+      std::swap(b2, b3);
+    } else if (detail::det3(b3.a, b1.a, sigma) < T(0)) {
+      const Vec3<T> n = b1.a.cross(b3.a);
+      if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
+      const Corner y = support(n, true);
+      const Corner o1 = b1;
+      b1 = b3;
+      b2 = y;
+      b3 = o1;
+    } else if (detail::det3(b1.a, b2.a, sigma) < T(0)) {
+      const Vec3<T> n = b2.a.cross(b1.a);
+      if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
+      const Corner y = support(n, true);
+      std::swap(b1, b2);
+      b3 = y;
+    } else {
+      break;
+    }
+  }
+  while (out.steps < cap) {
+    const Vec3<T> n = (b2.a - b1.a).cross(b3.a - b1.a);
+    if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
+    // Hill-climb from the corner furthest along n: the shortest climb.
+    const T h1 = n.dot(b1.a), h2 = n.dot(b2.a), h3 = n.dot(b3.a);
+    const Corner& from = h1 >= h2 ? (h1 >= h3 ? b1 : b3) : (h2 >= h3 ? b2 : b3);
+    hintP = from.p;
+    hintQ = from.q;
+    const Corner y = support(n, false);
+    const bool known = (y.p == b1.p && y.q == b1.q) || (y.p == b2.p && y.q == b2.q) || (y.p == b3.p && y.q == b3.q);
+    if (known || !(n.dot(y.a - b1.a) > T(0))) return finish(n, y, true);
+    if (detail::coneHolds(y.a, b2.a, b3.a, sigma)) {
+      b1 = y;
+    } else if (detail::coneHolds(b1.a, y.a, b3.a, sigma)) {
+      b2 = y;
+    } else if (detail::coneHolds(b1.a, b2.a, y.a, sigma)) {
+      b3 = y;
+    } else {
+      return finish(n, y, false);  // rounding: keep the best normal so far
+    }
+    if (detail::det3(b1.a, b2.a, b3.a) < T(0)) std::swap(b2, b3);
+  }
+  const Vec3<T> n = (b2.a - b1.a).cross(b3.a - b1.a);
+  return finish(n == Vec3<T>::Zero() ? sigma : n, b1, false);
+}
+
+}  // namespace mink
