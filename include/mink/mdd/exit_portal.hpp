@@ -19,6 +19,7 @@
 #pragma once
 
 #include "mink/core/defaults.hpp"
+#include "mink/gauss_map/arc_intersection.hpp"  // detail::det3
 #include "mink/mdd/detail/pair_frame.hpp"
 
 namespace mink {
@@ -35,21 +36,6 @@ struct ExitPortal {
   bool converged = false;
 };
 
-namespace detail {
-
-/// σ inside the cone spanned by a, b, c (apex at the origin), any orientation
-/// (det3: gauss_map/arc_intersection.hpp).
-template <class T>
-bool coneHolds(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& sigma) {
-  const T o = det3(a, b, c);
-  if (o == T(0)) return false;
-  const T s1 = det3(a, b, sigma), s2 = det3(b, c, sigma), s3 = det3(c, a, sigma);
-  if (o > T(0)) return s1 >= T(0) && s2 >= T(0) && s3 >= T(0);
-  return s1 <= T(0) && s2 <= T(0) && s3 <= T(0);
-}
-
-}  // namespace detail
-
 /// The exit-facet estimate for the ray c + u σ (frame of P). hintP / hintQ: support
 /// vertex hints (in and out).
 template <class T>
@@ -60,12 +46,13 @@ ExitPortal<T> exitPortal(const detail::PairFrame<T>& F, const Vec3<T>& c, const 
     int p, q;
   };
   ExitPortal<T> out;
-  // Discovery directions jump across the sphere: the hierarchy (when the shape has one)
-  // beats a long hill-climb there; refinement directions move little: hill-climb.
+  // Discovery directions jump across the sphere: the hierarchy or a seeded hill-climb
+  // (support_seeds.hpp). Refinement directions move less: the hierarchy on large shapes,
+  // else a hill-climb from the portal corner furthest along the new direction.
   auto support = [&](const Vec3<T>& d, bool far) {
     ++out.steps;
-    hintP = far ? F.supportPFar(d, hintP) : F.supportP(d, hintP);
-    hintQ = far ? F.supportMinusQFar(d, hintQ) : F.supportMinusQ(d, hintQ);
+    hintP = far ? F.supportPFar(d, hintP) : F.supportPRefine(d, hintP);
+    hintQ = far ? F.supportMinusQFar(d, hintQ) : F.supportMinusQRefine(d, hintQ);
     return Corner{Vec3<T>(F.P().vertex(hintP) - F.q(hintQ) - c), hintP, hintQ};
   };
   auto finish = [&](const Vec3<T>& n, const Corner& at, bool converged) {
@@ -123,12 +110,17 @@ ExitPortal<T> exitPortal(const detail::PairFrame<T>& F, const Vec3<T>& c, const 
     const Corner y = support(n, false);
     const bool known = (y.p == b1.p && y.q == b1.q) || (y.p == b2.p && y.q == b2.q) || (y.p == b3.p && y.q == b3.q);
     if (known || !(n.dot(y.a - b1.a) > T(0))) return finish(n, y, true);
-    if (detail::coneHolds(y.a, b2.a, b3.a, sigma)) {
-      b1 = y;
-    } else if (detail::coneHolds(b1.a, y.a, b3.a, sigma)) {
-      b2 = y;
-    } else if (detail::coneHolds(b1.a, b2.a, y.a, sigma)) {
+    // The plane through the ray and y splits the portal; σ lies in the sub-cone on the
+    // side where the signs of b_i·(σ × y) change (σ ∈ cone(b1, b2, y) iff b1·m ≥ 0 ≥ b2·m,
+    // and cyclically).
+    const Vec3<T> m = sigma.cross(y.a);
+    const T d1 = b1.a.dot(m), d2 = b2.a.dot(m), d3 = b3.a.dot(m);
+    if (d1 >= T(0) && d2 <= T(0)) {
       b3 = y;
+    } else if (d2 >= T(0) && d3 <= T(0)) {
+      b1 = y;
+    } else if (d3 >= T(0) && d1 <= T(0)) {
+      b2 = y;
     } else {
       return finish(n, y, false);  // rounding: keep the best normal so far
     }

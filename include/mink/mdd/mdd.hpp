@@ -136,32 +136,35 @@ class MddQuery {
     int& hintQ = cache_.vertexQ;
     int f0 = -1, g0 = -1;
     if (!earlyExit) {
-      const ExitPortal<T> est = exitPortal(F_, c, sigma, hintP, hintQ);
-      res_.portalSteps += est.steps;
-      f0 = alignedFaceP(est.vertexP, est.normal);
-      g0 = alignedFaceQ(est.vertexQ, est.normal);
-      int hq = est.vertexQ, hp = est.vertexP;
-      if (!budget.take() || !budget.take()) return MFace<T>();
-      const MFace<T> fv = F_.fv(f0, hq);
-      const MFace<T> vf = F_.vf(g0, hp);
-      res_.visitedFV += 1;
-      res_.visitedVF += 1;
-      const MFace<T> best = obj.better(vf, fv) ? vf : fv;
-      if (obj.num(best) > T(0) && faceHit(best)) return remember(best);
-      cache_.edgesP.clear();
-      cache_.edgesQ.clear();
-      edgesAround(P, est.vertexP, cache_.edgesP);
-      edgesAround(Q, est.vertexQ, cache_.edgesQ);
-      MFace<T> bestEE;
-      for (int ep : cache_.edgesP)
-        for (int eq : cache_.edgesQ) {
-          if (!budget.take()) return MFace<T>();
-          const MFace<T> m = F_.ee(ep, eq);
-          if (!m.valid()) continue;
-          ++res_.visitedEE;
-          if (obj.better(m, bestEE)) bestEE = m;
-        }
-      if (obj.num(bestEE) > T(0) && obj.better(bestEE, best) && faceHit(bestEE)) return remember(bestEE);
+      // 1. A face kept from the last query, on this side of the line: when the pair moved
+      //    a little, the exit face is it or one of its neighbours.
+      ExitPortal<T> est;
+      for (const MddCachedFace& cf : cache_.exitFaces) {
+        const MFace<T> m = rebuild(cf);
+        if (!m.valid() || !(obj.num(m) > T(0))) continue;
+        est.normal = m.N;
+        est.vertexP = m.type == MddFaceType::FV ? P.faceVertices(m.a)[0]
+                      : m.type == MddFaceType::VF ? m.a : P.edgeVertices(m.a).first;
+        est.vertexQ = m.type == MddFaceType::FV ? m.b
+                      : m.type == MddFaceType::VF ? Q.faceVertices(m.b)[0] : Q.edgeVertices(m.b).first;
+        break;
+      }
+      if (est.vertexP >= 0) {
+        MFace<T> hit;
+        if (!tryAround(est, obj, budget, f0, g0, hit)) return MFace<T>();
+        if (hit.valid()) return remember(hit);
+      }
+      // 2. Else the exit portal, unless the shapes are large and a kept face gave a start:
+      //    then the searches walk from there, a few faces instead of dozens of
+      //    hierarchy queries (benchmarks/README.md, coherence).
+      const bool large = F_.hasHierarchy();
+      if (est.vertexP < 0 || !large) {
+        est = exitPortal(F_, c, sigma, hintP, hintQ);
+        res_.portalSteps += est.steps;
+        MFace<T> hit;
+        if (!tryAround(est, obj, budget, f0, g0, hit)) return MFace<T>();
+        if (hit.valid()) return remember(hit);
+      }
     } else {
       // Initial face (section VI-A): around P's support vertex along σ, or the cached one.
       f0 = cache_.faceP;
@@ -210,6 +213,41 @@ class MddQuery {
     return MFace<T>();
   }
 
+  /// The faces at the estimate's support vertices: the FV and VF faces best aligned with
+  /// its normal (f0, g0: the searches' starts), then the EE faces of the edges there. `hit`
+  /// is the first that the line crosses (faceHit), else invalid. False on the visit cap.
+  bool tryAround(const ExitPortal<T>& est, const RayObjective<T>& obj, SearchBudget& budget, int& f0, int& g0,
+                 MFace<T>& hit) {
+    f0 = alignedFaceP(est.vertexP, est.normal);
+    g0 = alignedFaceQ(est.vertexQ, est.normal);
+    int hq = est.vertexQ, hp = est.vertexP;
+    if (!budget.take() || !budget.take()) return false;
+    const MFace<T> fv = F_.fv(f0, hq);
+    const MFace<T> vf = F_.vf(g0, hp);
+    res_.visitedFV += 1;
+    res_.visitedVF += 1;
+    const MFace<T> best = obj.better(vf, fv) ? vf : fv;
+    if (obj.num(best) > T(0) && faceHit(best)) {
+      hit = best;
+      return true;
+    }
+    cache_.edgesP.clear();
+    cache_.edgesQ.clear();
+    edgesAround(F_.P(), est.vertexP, cache_.edgesP);
+    edgesAround(F_.Q(), est.vertexQ, cache_.edgesQ);
+    MFace<T> bestEE;
+    for (int ep : cache_.edgesP)
+      for (int eq : cache_.edgesQ) {
+        if (!budget.take()) return false;
+        const MFace<T> m = F_.ee(ep, eq);
+        if (!m.valid()) continue;
+        ++res_.visitedEE;
+        if (obj.better(m, bestEE)) bestEE = m;
+      }
+    if (obj.num(bestEE) > T(0) && obj.better(bestEE, best) && faceHit(bestEE)) hit = bestEE;
+    return true;
+  }
+
   /// Every FV, VF and EE face of M (each facet of M is one of them: its support sets are
   /// a face of P, a face of Q, or two non-parallel edges whose arcs cross properly).
   MFace<T> exhaustive(const RayObjective<T>& obj) {
@@ -246,25 +284,40 @@ class MddQuery {
     const ConvexPolyhedron<T>& Q = F_.Q();
     cache_.setP.clear();
     cache_.setQ.clear();
+    cache_.points2.clear();
+    // The face's polygon in cyclic order; ids index setP × setQ as in hitSets.
+    auto add = [&](int ip, int iq) {
+      const Vec3<T> y = P.vertex(cache_.setP[ip]) - F_.q(cache_.setQ[iq]);
+      cache_.points2.push_back({{y.dot(u1_), y.dot(u2_)}, ip * static_cast<int>(cache_.setQ.size()) + iq});
+    };
     switch (m.type) {
       case MddFaceType::FV:
         for (int v : P.faceVertices(m.a)) cache_.setP.push_back(v);
         cache_.setQ.push_back(m.b);
+        for (int i = 0; i < static_cast<int>(cache_.setP.size()); ++i) add(i, 0);
         break;
       case MddFaceType::VF:
         cache_.setP.push_back(m.a);
         for (int v : Q.faceVertices(m.b)) cache_.setQ.push_back(v);
+        for (int j = 0; j < static_cast<int>(cache_.setQ.size()); ++j) add(0, j);
         break;
       case MddFaceType::EE:
         cache_.setP.push_back(P.edgeVertices(m.a).first);
         cache_.setP.push_back(P.edgeVertices(m.a).second);
         cache_.setQ.push_back(Q.edgeVertices(m.b).first);
         cache_.setQ.push_back(Q.edgeVertices(m.b).second);
+        add(0, 0);
+        add(1, 0);
+        add(1, 1);
+        add(0, 1);
         break;
       default:
         return false;
     }
-    return hitSets(T(0));
+    OriginLocation<T> loc;
+    if (!locateOriginConvex(cache_.points2, loc)) return false;
+    setWitnesses(loc);
+    return true;
   }
 
   /// Does the line {t s} cross the facet of M in face m's plane? Fills the witnesses
@@ -308,6 +361,12 @@ class MddQuery {
       }
     OriginLocation<T> loc;
     if (!locateOrigin2(cache_.points2, cache_.hull2, loc, slack)) return false;
+    setWitnesses(loc);
+    return true;
+  }
+
+  void setWitnesses(const OriginLocation<T>& loc) {
+    const ConvexPolyhedron<T>& P = F_.P();
     wP_ = Vec3<T>::Zero();
     wQ_ = Vec3<T>::Zero();
     for (int i = 0; i < loc.count; ++i) {
@@ -316,7 +375,6 @@ class MddQuery {
       wP_ += loc.weight[i] * P.vertex(cache_.setP[ip]);
       wQ_ += loc.weight[i] * F_.q(cache_.setQ[iq]);
     }
-    return true;
   }
 
   /// Grazing (case 2): the plane w·x = 0 supports M and holds the line. The line meets

@@ -144,6 +144,42 @@ bool locateOrigin2(std::vector<std::pair<std::pair<T, T>, int>>& pts, std::vecto
   return best <= slack * slack;
 }
 
+/// locateOrigin2 for points already in cyclic order around a convex polygon (either
+/// orientation): no sorting or hull. False if outside or if the polygon is degenerate.
+template <class T>
+bool locateOriginConvex(const std::vector<std::pair<std::pair<T, T>, int>>& pts, OriginLocation<T>& loc) {
+  const std::size_t n = pts.size();
+  if (n < 3) return false;
+  const std::pair<T, T> o(T(0), T(0));
+  int pos = 0, neg = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int s = orient2(pts[i].first, pts[(i + 1) % n].first, o);
+    pos += s > 0;
+    neg += s < 0;
+  }
+  if ((pos > 0) == (neg > 0)) return false;  // outside, or every edge through the origin
+  const int side = pos > 0 ? 1 : -1;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const auto& a = pts[0].first;
+    const auto& b = pts[i].first;
+    const auto& c = pts[i + 1].first;
+    if (side * orient2(a, b, o) < 0 || side * orient2(b, c, o) < 0 || side * orient2(c, a, o) < 0) continue;
+    const T A = (b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first);
+    if (A == T(0)) continue;
+    const T wb = ((o.first - a.first) * (c.second - a.second) - (o.second - a.second) * (c.first - a.first)) / A;
+    const T wc = ((b.first - a.first) * (o.second - a.second) - (b.second - a.second) * (o.first - a.first)) / A;
+    loc.count = 3;
+    loc.id[0] = pts[0].second;
+    loc.id[1] = pts[i].second;
+    loc.id[2] = pts[i + 1].second;
+    loc.weight[0] = T(1) - wb - wc;
+    loc.weight[1] = wb;
+    loc.weight[2] = wc;
+    return true;
+  }
+  return false;
+}
+
 /// Basis (u1, u2) of the plane orthogonal to s, exact for exact T (not unit).
 template <class T>
 std::pair<Vec3<T>, Vec3<T>> orthogonalBasis(const Vec3<T>& s) {

@@ -76,6 +76,22 @@ class PairFrame {
     if (!useHierarchy_) return P_.support(d, hint < 0 ? 0 : hint);
     return extremeVertex(P_, d);
   }
+  /// Does either shape have a hierarchy that the queries may use?
+  bool hasHierarchy() const { return useHierarchy_ && (hierarchyOf(P_) || hierarchyOf(Q_)); }
+  /// For a direction near the hint's but on a large shape: the hierarchy when the shape
+  /// has one (a long hill-climb on a fine mesh misses the cache at every step; the
+  /// hierarchy's levels are compact), else a hill-climb from the hint.
+  int supportPRefine(const Vec3<T>& d, int hint) const {
+    if (useHierarchy_)
+      if (const DKHierarchy<T>* H = hierarchyOf(P_)) return H->support(d);
+    return P_.support(d, hint < 0 ? 0 : hint);
+  }
+  int supportMinusQRefine(const Vec3<T>& d, int hint) const {
+    const Vec3<T> dl = -(R_.transpose() * d);
+    if (useHierarchy_)
+      if (const DKHierarchy<T>* H = hierarchyOf(Q_)) return H->support(dl);
+    return Q_.support(dl, hint < 0 ? 0 : hint);
+  }
   int supportMinusQFar(const Vec3<T>& d, int hint) const {
     const Vec3<T> dl = -(R_.transpose() * d);
     if (!useHierarchy_) return Q_.support(dl, hint < 0 ? 0 : hint);
