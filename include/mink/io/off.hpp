@@ -83,7 +83,10 @@ IndexedMesh<T> readOff(std::istream& in, const std::string& sourceName = "<strea
   const int numFaces = count(counts[1], "face count");
   if (counts.size() == 3) count(counts[2], "edge count");
 
-  mesh.vertices.reserve(static_cast<std::size_t>(numVertices));
+  // The counts come from the file: reserve no more than a modest amount up front, so a
+  // forged header cannot demand gigabytes; a real large mesh just grows as it is read.
+  constexpr int kReserveCap = 1 << 16;
+  mesh.vertices.reserve(static_cast<std::size_t>(std::min(numVertices, kReserveCap)));
   for (int v = 0; v < numVertices; ++v) {
     tokens = nextTokens();
     if (tokens.empty()) {
@@ -105,7 +108,7 @@ IndexedMesh<T> readOff(std::istream& in, const std::string& sourceName = "<strea
     mesh.vertices.push_back(p);
   }
 
-  mesh.faces.reserve(static_cast<std::size_t>(numFaces));
+  mesh.faces.reserve(static_cast<std::size_t>(std::min(numFaces, kReserveCap)));
   for (int f = 0; f < numFaces; ++f) {
     tokens = nextTokens();
     if (tokens.empty()) {

@@ -39,6 +39,10 @@ void checkPose(const Pose<T>& pose, const char* name) {
   for (int i = 0; i < 3; ++i) {
     if (!ScalarTraits<T>::isFinite(pose.translation[i]))
       throw InvalidInput(std::string("mdd: ") + name + ".translation is not finite");
+    if constexpr (!ScalarTraits<T>::isExact)
+      if (absValue(pose.translation[i]) > ScalarTraits<T>::largestCoordinate())
+        throw InvalidInput(std::string("mdd: ") + name +
+                           ".translation is out of range (above ScalarTraits::largestCoordinate())");
     for (int j = 0; j < 3; ++j)
       if (!ScalarTraits<T>::isFinite(pose.rotation(i, j)))
         throw InvalidInput(std::string("mdd: ") + name + ".rotation is not finite");
@@ -92,12 +96,14 @@ class MddQuery {
     const ConvexPolyhedron<T>& P = F.P();
     const ConvexPolyhedron<T>& Q = F.Q();
     if constexpr (ScalarTraits<T>::isExact) {
-      tol_ = T(0);
+      tol_ = numTol_ = T(0);
     } else {
       const T scene = P.extent() + Q.extent() + F.t().template lpNorm<1>();
-      tol_ = opt.touchTolerance >= T(0)
-                 ? opt.touchTolerance
-                 : T(defaults::kMddTouchToleranceFactor) * ScalarTraits<T>::epsilon() * scene;
+      // numTol_: the rounding slack of the facet checks, always automatic; tol_: what
+      // counts as touching, the caller's choice (a large touchTolerance must not make
+      // the facet checks accept faces the line misses).
+      numTol_ = T(defaults::kMddTouchToleranceFactor) * ScalarTraits<T>::epsilon() * scene;
+      tol_ = opt.touchTolerance >= T(0) ? opt.touchTolerance : numTol_;
     }
     const long long faces = P.numFaces() + Q.numFaces() + 64;
     cap_ = opt.maxVisits >= 0 ? opt.maxVisits : defaults::kMddVisitFactor * faces;
@@ -344,10 +350,10 @@ class MddQuery {
     }
     const Vec3<T>& N = m.N;
     T eps = T(0);
-    if constexpr (!ScalarTraits<T>::isExact) eps = tol_ * N.norm();
+    if constexpr (!ScalarTraits<T>::isExact) eps = numTol_ * N.norm();
     supportSet(P, vp, [&](int v) { return T(N.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
     supportSet(Q, vq, [&](int v) { return T(-N.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
-    return hitSets(tol_);
+    return hitSets(numTol_);
   }
 
   /// Does the line cross (within `slack`) the hull of setP − setQ? Fills the witnesses.
@@ -385,7 +391,7 @@ class MddQuery {
     vp = F_.supportP(w, cache_.vertexP);
     vq = F_.supportMinusQ(w, cache_.vertexQ);
     T eps = T(0);
-    if constexpr (!ScalarTraits<T>::isExact) eps = tol_ * w.norm();
+    if constexpr (!ScalarTraits<T>::isExact) eps = numTol_ * w.norm();
     supportSet(P, vp, [&](int v) { return T(w.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
     supportSet(Q, vq, [&](int v) { return T(-w.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
     // In the plane: coordinate a along s, b along e = w × s; the line is b == 0.
@@ -465,7 +471,7 @@ class MddQuery {
   Vec3<T> s_;
   MddCache<T>& cache_;
   MddResult<T>& res_;
-  T tol_;
+  T tol_, numTol_;
   long long cap_;
   Vec3<T> u1_, u2_;
   Vec3<T> wP_ = Vec3<T>::Zero(), wQ_ = Vec3<T>::Zero();
@@ -498,17 +504,11 @@ Vec3<T> unitOrExact(const Vec3<T>& n) {
 
 }  // namespace detail
 
-/// Minimum directional distance between P (placed by poseP) and Q (placed by poseQ)
-/// along s (world frame, any non-zero length), per DESIGN.md: see MddResult for the
-/// meaning, unit, frame and sign of every output. Throws InvalidInput for a zero or
-/// non-finite s or a non-finite / non-orthonormal pose; never throws otherwise.
-/// `cache` (optional) carries frame coherence between queries of the same pair.
+namespace detail {
+/// mdd() for a direction already checked (and, for inexact T, scaled to unit order).
 template <class T>
-MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
-                 const Pose<T>& poseQ, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options = {}) {
-  for (int i = 0; i < 3; ++i)
-    if (!ScalarTraits<T>::isFinite(s[i])) throw InvalidInput("mdd: direction s is not finite");
-  if (s == Vec3<T>::Zero()) throw InvalidInput("mdd: direction s is zero");
+MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                        const Pose<T>& poseQ, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options) {
   const detail::RelativePose<T> rel = detail::relativePose(P, poseP, Q, poseQ, cache);
   const Mat3<T>& RPt = rel.RPt;
   const Mat3<T>& R = rel.R;
@@ -653,6 +653,38 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
   query.facetHit(f1);
   record(f1);
   return finish(t1);
+}
+
+}  // namespace detail
+
+/// Minimum directional distance between P (placed by poseP) and Q (placed by poseQ)
+/// along s (world frame, any non-zero length), per DESIGN.md: see MddResult for the
+/// meaning, unit, frame and sign of every output. Throws InvalidInput for a zero or
+/// non-finite s, a non-finite / non-orthonormal pose or a NaN touchTolerance; never
+/// throws otherwise.
+/// `cache` (optional) carries frame coherence between queries of the same pair.
+template <class T>
+MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                 const Pose<T>& poseQ, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options = {}) {
+  for (int i = 0; i < 3; ++i)
+    if (!ScalarTraits<T>::isFinite(s[i])) throw InvalidInput("mdd: direction s is not finite");
+  if (s == Vec3<T>::Zero()) throw InvalidInput("mdd: direction s is zero");
+  if (!(options.touchTolerance == options.touchTolerance))
+    throw InvalidInput("mdd: options.touchTolerance is NaN (use a negative value for automatic)");
+  if constexpr (ScalarTraits<T>::isExact) {
+    return detail::mddChecked(P, poseP, Q, poseQ, s, cache, options);
+  } else {
+    // Any non-zero length of s is allowed: scale it by a power of two (exact) to unit
+    // order, so that |s|^2 and the products with s neither overflow nor underflow, and
+    // scale the parameter back (parameter * s is unchanged).
+    using std::ilogb;
+    using std::ldexp;
+    const int e = ilogb(s.cwiseAbs().maxCoeff());
+    const Vec3<T> su(ldexp(s[0], -e), ldexp(s[1], -e), ldexp(s[2], -e));
+    MddResult<T> r = detail::mddChecked(P, poseP, Q, poseQ, su, cache, options);
+    r.parameter = ldexp(r.parameter, -e);
+    return r;
+  }
 }
 
 /// mdd() without a coherence cache (allocates its small work buffers per call).

@@ -137,7 +137,9 @@ class PairFrame {
     const auto vq = Q_.edgeVertices(eq);
     const Vec3<T> p0 = P_.vertex(vp.first);
     const Vec3<T> q0 = q(vq.first);
-    const Vec3<T> dp = P_.vertex(vp.second) - p0, dq = q(vq.second) - q0;
+    // Q's edge direction from its own coordinates, then rotated: q(b) − q(a) would lose
+    // it entirely when Q is small against its offset (a 1e-29 shape placed at 2).
+    const Vec3<T> dp = P_.vertex(vp.second) - p0, dq = R_ * Vec3<T>(Q_.vertex(vq.second) - Q_.vertex(vq.first));
     Vec3<T> N = dp.cross(dq);
     if constexpr (!ScalarTraits<T>::isExact) {
       // Edges parallel up to rounding (exact quarter turns of symmetric shapes make them

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -46,11 +48,22 @@ struct PolyhedronBuilder {
   }
 
   static void checkFinite(const std::vector<Vec3<T>>& pts, const char* who, const char* what) {
-    for (std::size_t i = 0; i < pts.size(); ++i)
-      for (int k = 0; k < 3; ++k)
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      for (int k = 0; k < 3; ++k) {
         if (!ScalarTraits<T>::isFinite(pts[i][k]))
           throw InvalidInput(std::string(who) + ": " + what + " " + std::to_string(i) +
                              " has a non-finite coordinate (NaN or Inf)");
+        if constexpr (!ScalarTraits<T>::isExact) {
+          if (ScalarTraits<T>::inCoordinateRange(pts[i][k])) continue;
+          char msg[256];
+          std::snprintf(msg, sizeof msg,
+                        " has a coordinate out of range (%.3g; coordinates must be at most %.3g in magnitude, "
+                        "where the exact predicates cannot overflow)",
+                        static_cast<double>(pts[i][k]), static_cast<double>(ScalarTraits<T>::largestCoordinate()));
+          throw InvalidInput(std::string(who) + ": " + what + " " + std::to_string(i) + msg);
+        }
+      }
+    }
   }
 
   // Normal of a loop: for exact T its Newell normal; otherwise, for an exactly planar
@@ -346,6 +359,36 @@ struct PolyhedronBuilder {
     if (points.size() < 4)
       throw InvalidInput("fromPoints: need at least 4 points, got " + std::to_string(points.size()));
     checkFinite(points, who, "point");
+    if constexpr (!ScalarTraits<T>::isExact) {
+      // A shape far from unit size (1e-100 or 1e80) is built at unit size, scaled by a
+      // power of two (exact both ways): orient3d's expansions and the normals' squared
+      // lengths would otherwise underflow or overflow. The hull does not depend on it.
+      T m = T(0);
+      for (const auto& p : points) m = std::max(m, p.cwiseAbs().maxCoeff());
+      const int e = m > T(0) ? std::ilogb(m) : 0;
+      if (e > kRescaleExponent || e < -kRescaleExponent) {
+        std::vector<Vec3<T>> scaled(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i)
+          for (int k = 0; k < 3; ++k) scaled[i][k] = std::ldexp(points[i][k], -e);
+        HullOptions<T> opt = options;
+        if (opt.tolerance > T(0)) opt.tolerance = std::ldexp(opt.tolerance, -e);
+        Poly P = build(scaled, opt, who);
+        for (std::size_t i = 0; i < P.vertices_.size(); ++i)
+          for (int k = 0; k < 3; ++k) P.vertices_[i][k] = std::ldexp(P.vertices_[i][k], e);
+        for (auto& o : P.faceOffset_) o = std::ldexp(o, e);
+        for (int k = 0; k < 3; ++k) P.interior_[k] = std::ldexp(P.interior_[k], e);
+        P.tolerance_ = std::ldexp(P.tolerance_, e);
+        P.extent_ = std::ldexp(P.extent_, e);
+        return P;
+      }
+    }
+    return build(points, options, who);
+  }
+
+  /// Beyond 2^±this, fromPoints works on a copy scaled to unit size.
+  static constexpr int kRescaleExponent = 64;
+
+  static Poly build(const std::vector<Vec3<T>>& points, const HullOptions<T>& options, const char* who) {
     const T extent = extentOf(points);
     const T tol = toleranceFor(options, extent, who);
     const auto tris = Quickhull<T>::run(points, tol);

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <string>
 #include <vector>
@@ -109,36 +110,53 @@ class Quickhull {
       if (a.x() < b.x() || (a.x() == b.x() && (a.y() < b.y() || (a.y() == b.y() && a.z() < b.z()))))
         i0 = i;
     }
+    // The degeneracy tests below are polynomials of degree up to 6 in the coordinates:
+    // evaluate them on differences scaled by a power of two (exact) to unit order, so
+    // that large or small shapes neither overflow nor underflow.
+    int e = 0;
+    if constexpr (!ScalarTraits<T>::isExact) {
+      T m = T(0);
+      for (int i = 0; i < n; ++i) m = std::max(m, (pts_[i] - pts_[i0]).cwiseAbs().maxCoeff());
+      if (m > T(0)) e = std::ilogb(m);
+    }
+    auto diff = [&](int i, int j) {
+      Vec3<T> d = pts_[i] - pts_[j];
+      if constexpr (!ScalarTraits<T>::isExact)
+        for (int k = 0; k < 3; ++k) d[k] = std::ldexp(d[k], -e);
+      return d;
+    };
+    T tolS = tol_;
+    if constexpr (!ScalarTraits<T>::isExact) tolS = std::ldexp(tol_, -e);
     // Farthest from it: the maximum of a strictly convex function is a corner.
     int i1 = i0;
     T best = T(0);
     for (int i = 0; i < n; ++i) {
-      const T d = (pts_[i] - pts_[i0]).squaredNorm();
+      const T d = diff(i, i0).squaredNorm();
       if (d > best) {
         best = d;
         i1 = i;
       }
     }
-    if (!(best > tol_ * tol_)) throw InvalidInput("fromPoints: all points coincide (within the tolerance)");
-    const Vec3<T> dir = pts_[i1] - pts_[i0];
+    if (!(best > tolS * tolS)) throw InvalidInput("fromPoints: all points coincide (within the tolerance)");
+    const Vec3<T> dir = diff(i1, i0);
     int i2 = i0;
     best = T(0);
     for (int i = 0; i < n; ++i) {
-      const T d = (pts_[i] - pts_[i0]).cross(dir).squaredNorm();
+      const T d = diff(i, i0).cross(dir).squaredNorm();
       if (d > best) {
         best = d;
         i2 = i;
       }
     }
     // distance^2 to the line is d / |dir|^2
-    if (!(best > tol_ * tol_ * dir.squaredNorm()))
+    if (!(best > tolS * tolS * dir.squaredNorm()))
       throw InvalidInput("fromPoints: all points are collinear (within the tolerance)");
-    const Vec3<T> nrm = dir.cross(pts_[i2] - pts_[i0]);
+    const Vec3<T> nrm = dir.cross(diff(i2, i0));
     int i3 = i0;
     best = T(0);
     T bestSigned = T(0);
     for (int i = 0; i < n; ++i) {
-      const T s = nrm.dot(pts_[i] - pts_[i0]);
+      const T s = nrm.dot(diff(i, i0));
       const T d = absValue(s);
       if (d > best) {
         best = d;
@@ -146,7 +164,7 @@ class Quickhull {
         i3 = i;
       }
     }
-    if (!(best * best > tol_ * tol_ * nrm.squaredNorm()))
+    if (!(best * best > tolS * tolS * nrm.squaredNorm()))
       throw InvalidInput("fromPoints: all points are coplanar (within the tolerance)");
     // Orient so that i3 lies below the plane of (i0, i1, i2).
     if (bestSigned > T(0)) std::swap(i1, i2);
