@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Builds mink and runs its whole test suite twice:
+# Builds mink and runs its whole test suite twice, then its fuzzer:
 #   1. Release, everything (tests, benchmarks, examples) in build/, then ctest;
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer (-O1 -g, assertions on), tests only,
-#      in build-asan/, then ctest without the package test.
+#      in build-asan/, then ctest without the package test;
+#   3. the libFuzzer target (fuzz/run_fuzz.sh: clang, replays fuzz/corpus/ and
+#      fuzz/regressions/, then fuzzes for MINK_FUZZ_SECONDS, default 60) in build-fuzz/.
 # On Debian/Ubuntu, when run as root, it first installs missing build dependencies with
 # apt-get (nothing is installed when they are all present). A configure or build error
 # stops it at once; failing tests of the first run do not keep the second from running.
@@ -41,5 +43,9 @@ sanitizer_tests=passed
 ctest --test-dir "$root/build-asan" --output-on-failure -j "$jobs" -E '^package\.' \
   || sanitizer_tests=FAILED
 
-echo "== run_all.sh: Release tests $release_tests, ASan+UBSan tests $sanitizer_tests"
-[[ "$release_tests" == passed && "$sanitizer_tests" == passed ]]
+echo "== run_all.sh: libFuzzer (fuzz/run_fuzz.sh, ${MINK_FUZZ_SECONDS:-60} s)"
+fuzz_result=passed
+MINK_FUZZ_BUILD_DIR="$root/build-fuzz" MINK_JOBS="$jobs" bash "$repo/fuzz/run_fuzz.sh" || fuzz_result=FAILED
+
+echo "== run_all.sh: Release tests $release_tests, ASan+UBSan tests $sanitizer_tests, fuzzing $fuzz_result"
+[[ "$release_tests" == passed && "$sanitizer_tests" == passed && "$fuzz_result" == passed ]]

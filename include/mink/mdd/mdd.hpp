@@ -680,7 +680,13 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
     using std::ilogb;
     using std::ldexp;
     const int e = ilogb(s.cwiseAbs().maxCoeff());
-    const Vec3<T> su(ldexp(s[0], -e), ldexp(s[1], -e), ldexp(s[2], -e));
+    Vec3<T> su(ldexp(s[0], -e), ldexp(s[1], -e), ldexp(s[2], -e));
+    // A component below the unit roundoff of the largest tilts the line by less than the
+    // rounding of any product with s, but it made the 2-D centre-of-duality test call a
+    // grazing line (tilted by 1e-21) interior, with c on the boundary of M: it is
+    // dropped, and the answer is the one for a direction within one rounding of s.
+    for (int i = 0; i < 3; ++i)
+      if (detail::absValue(su[i]) < ScalarTraits<T>::epsilon()) su[i] = T(0);
     MddResult<T> r = detail::mddChecked(P, poseP, Q, poseQ, su, cache, options);
     r.parameter = ldexp(r.parameter, -e);
     return r;

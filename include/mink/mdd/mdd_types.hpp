@@ -58,7 +58,8 @@ struct MddResult {
   /// parameter * |s| only when |s| == 1; use `parameter` for exact answers.
   T translation = T(0);
   /// The same motion as a multiple of s as given: moving Q by parameter * s. Exact for
-  /// exact T (a ratio of polynomials in the inputs).
+  /// exact T (a ratio of polynomials in the inputs). For inexact T it is ±infinity when
+  /// |translation| / |s| exceeds the type's range (a tiny s, e.g. |s| = 1e-300).
   T parameter = T(0);
   /// Outward normal of the face of M hit by the line (world frame), unit for inexact T;
   /// for exact T unnormalised (exact direction).

@@ -49,6 +49,52 @@ struct OriginLocation {
   T weight[3] = {T(0), T(0), T(0)};
 };
 
+/// loc := the origin's barycentric coordinates in the triangle of points a, b, c (with
+/// their ids); false when the triangle is degenerate.
+template <class T>
+bool triangleLocation(const std::pair<std::pair<T, T>, int>& pa, const std::pair<std::pair<T, T>, int>& pb,
+                      const std::pair<std::pair<T, T>, int>& pc, OriginLocation<T>& loc) {
+  const auto& a = pa.first;
+  const auto& b = pb.first;
+  const auto& c = pc.first;
+  const T A = (b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first);
+  if (A == T(0)) return false;
+  const T wb = (-a.first * (c.second - a.second) + a.second * (c.first - a.first)) / A;
+  const T wc = ((b.first - a.first) * -a.second - (b.second - a.second) * -a.first) / A;
+  loc.count = 3;
+  loc.id[0] = pa.second;
+  loc.id[1] = pb.second;
+  loc.id[2] = pc.second;
+  loc.weight[0] = T(1) - wb - wc;
+  loc.weight[1] = wb;
+  loc.weight[2] = wc;
+  return true;
+}
+
+/// The fan triangle (h0, h_i, h_i+1) of a convex polygon (vertices in cyclic order,
+/// orientation `side` = +1 CCW / −1 CW) that holds the origin, the polygon's edges being
+/// known to hold it on their inner side. The diagonals' signs are computed once each and
+/// shared by the two triangles beside them: testing each triangle's three sides afresh
+/// let rounding put an origin lying on a diagonal outside both triangles.
+template <class T>
+bool fanLocate(const std::vector<std::pair<std::pair<T, T>, int>>& h, int side, OriginLocation<T>& loc) {
+  const std::pair<T, T> o(T(0), T(0));
+  const std::size_t n = h.size();
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    // Beyond the diagonal h0 h_{i+1}? (the last "diagonal" is a polygon edge: inside).
+    const bool last = i + 2 == n;
+    if (!last && side * orient2(h[0].first, h[i + 1].first, o) > 0) continue;
+    if (!triangleLocation(h[0], h[i], h[i + 1], loc)) return false;
+    // A sliver triangle (a face seen almost edge-on along s) gives weights that rounding
+    // has thrown far outside [0, 1]: no reliable location, so no hit (the caller's
+    // search and its tolerant check take over).
+    const T slackW = T(1) / T(1024);
+    if (loc.weight[1] < -slackW || loc.weight[2] < -slackW || loc.weight[0] < -slackW) return false;
+    return true;
+  }
+  return false;
+}
+
 template <class T>
 bool locateOrigin2Strict(std::vector<std::pair<std::pair<T, T>, int>>& pts,
                          std::vector<std::pair<std::pair<T, T>, int>>& h, OriginLocation<T>& loc) {
@@ -95,25 +141,16 @@ bool locateOrigin2Strict(std::vector<std::pair<std::pair<T, T>, int>>& pts,
   if (h.size() == 2) return onSegment(h[0], h[1]);
   for (std::size_t i = 0; i < h.size(); ++i)
     if (orient2(h[i].first, h[(i + 1) % h.size()].first, o) < 0) return false;
-  // Inside the convex polygon: find the fan triangle (h0, hi, hi+1) holding the origin.
+  // Inside the convex polygon (counter-clockwise): find the fan triangle (h0, hi, hi+1)
+  // holding the origin, each tested on its three sides.
   for (std::size_t i = 1; i + 1 < h.size(); ++i) {
-    const P2& a = h[0].first;
-    const P2& b = h[i].first;
-    const P2& c = h[i + 1].first;
-    if (orient2(a, b, o) < 0 || orient2(b, c, o) < 0 || orient2(c, a, o) < 0) continue;
-    const T A = (b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first);
-    const T wb = ((o.first - a.first) * (c.second - a.second) - (o.second - a.second) * (c.first - a.first)) / A;
-    const T wc = ((b.first - a.first) * (o.second - a.second) - (b.second - a.second) * (o.first - a.first)) / A;
-    loc.count = 3;
-    loc.id[0] = h[0].second;
-    loc.id[1] = h[i].second;
-    loc.id[2] = h[i + 1].second;
-    loc.weight[0] = T(1) - wb - wc;
-    loc.weight[1] = wb;
-    loc.weight[2] = wc;
-    return true;
+    if (orient2(h[0].first, h[i].first, o) < 0 || orient2(h[i].first, h[i + 1].first, o) < 0 ||
+        orient2(h[i + 1].first, h[0].first, o) < 0)
+      continue;
+    if (triangleLocation(h[0], h[i], h[i + 1], loc)) return true;
   }
-  return false;
+  // None: rounding put an origin on a diagonal outside both triangles beside it.
+  return fanLocate(h, 1, loc);
 }
 
 template <class T>
@@ -159,23 +196,13 @@ bool locateOriginConvex(const std::vector<std::pair<std::pair<T, T>, int>>& pts,
   }
   if ((pos > 0) == (neg > 0)) return false;  // outside, or every edge through the origin
   const int side = pos > 0 ? 1 : -1;
+  // Each fan triangle tested on its own three sides: an origin on a diagonal may then be
+  // refused by both triangles beside it (rounding); the caller's search then decides.
   for (std::size_t i = 1; i + 1 < n; ++i) {
-    const auto& a = pts[0].first;
-    const auto& b = pts[i].first;
-    const auto& c = pts[i + 1].first;
-    if (side * orient2(a, b, o) < 0 || side * orient2(b, c, o) < 0 || side * orient2(c, a, o) < 0) continue;
-    const T A = (b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first);
-    if (A == T(0)) continue;
-    const T wb = ((o.first - a.first) * (c.second - a.second) - (o.second - a.second) * (c.first - a.first)) / A;
-    const T wc = ((b.first - a.first) * (o.second - a.second) - (b.second - a.second) * (o.first - a.first)) / A;
-    loc.count = 3;
-    loc.id[0] = pts[0].second;
-    loc.id[1] = pts[i].second;
-    loc.id[2] = pts[i + 1].second;
-    loc.weight[0] = T(1) - wb - wc;
-    loc.weight[1] = wb;
-    loc.weight[2] = wc;
-    return true;
+    if (side * orient2(pts[0].first, pts[i].first, o) < 0 || side * orient2(pts[i].first, pts[i + 1].first, o) < 0 ||
+        side * orient2(pts[i + 1].first, pts[0].first, o) < 0)
+      continue;
+    if (triangleLocation(pts[0], pts[i], pts[i + 1], loc)) return true;
   }
   return false;
 }
