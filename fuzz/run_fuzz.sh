@@ -5,8 +5,7 @@
 #      with apt-get if missing.
 #   2. Configures and builds the standalone project fuzz/ in $MINK_FUZZ_BUILD_DIR.
 #   3. Replays every seed (fuzz/corpus/) and every saved regression (fuzz/regressions/)
-#      once: each must pass (known, reported bugs are tolerated by default; see
-#      MINK_FUZZ_TOLERATE_KNOWN_BUGS in fuzz/CMakeLists.txt).
+#      once: each must pass.
 #   4. Fuzzes for $MINK_FUZZ_SECONDS seconds from a scratch copy of the seed corpus (the
 #      committed corpus is never modified) and prints the executions done.
 # Exits non-zero on any crash, sanitizer report, timeout, out-of-memory or reference
@@ -15,7 +14,7 @@
 # Environment: MINK_FUZZ_BUILD_DIR (default /tmp/mink-fuzz-build), MINK_FUZZ_SECONDS
 #              (default 60), MINK_FUZZ_WORK_DIR (scratch; default a fresh mktemp dir),
 #              MINK_JOBS (build parallelism, default nproc), MINK_FUZZ_CMAKE_ARGS (extra
-#              configure arguments, e.g. -DMINK_FUZZ_TOLERATE_KNOWN_BUGS=OFF).
+#              configure arguments, e.g. -DMINK_FUZZ_INCLUDE_DIR=/other/include).
 set -euo pipefail
 
 fuzz_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"

@@ -224,6 +224,78 @@ TYPED_TEST(Orient3d, ExtremeScales) {
   EXPECT_EQ(failures, 0);
 }
 
+// Coordinates far below the others (1e-300, DBL_MIN, denormals beside coordinates of size
+// 1): the double expansion's products of three differences underflow, and orient3d must
+// still give the exact sign (it then works in long double; see the header). Points on the
+// plane z = 0 (exactly, in random coordinates), with tiny z's put on some of them so that
+// the sign is decided by those alone. Regression of fuzz/regressions/tiny_coordinate_*.
+TEST(Orient3dExact, TinyCoordinatesBesideUnitOnes) {
+  std::mt19937 rng(9107u);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  const double tiny[] = {1e-300, -3e-305, std::numeric_limits<double>::min(), 1e-310,
+                         std::numeric_limits<double>::denorm_min(), 7e-200, -1e-95, 0.0};
+  std::uniform_int_distribution<int> pick(0, 7), axis(0, 2);
+  int failures = 0;
+  for (int i = 0; i < 4000; ++i) {
+    Vec3<double> p[4];
+    const int k = axis(rng);  // the plane x_k = 0
+    for (auto& q : p) {
+      q = Vec3<double>(u(rng), u(rng), u(rng));
+      q[k] = tiny[pick(rng)];
+    }
+    if (i % 3 == 0) p[3] = p[0];  // duplicates too
+    expectExact(p[0], p[1], p[2], p[3], "seed 9107 #" + std::to_string(i), failures);
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+// accurateCross: the direction of (b - a) x (c - a) to about one ulp of its length, for
+// sliver triangles whose width is far below the rounding of their coordinates' low parts
+// (a 2^-1022-wide face beside coordinates of size 1 came out with the normal (0, 1, 0)
+// instead of (-3, 1, 0)/sqrt(10); fuzz/regressions/sliver_face_normal_lost_in_corrections).
+// Reference: the exact cross product in Gmpq.
+TEST(AccurateCross, SliverTrianglesKeepTheirDirection) {
+  std::mt19937 rng(9108u);
+  std::uniform_real_distribution<double> u(-4.0, 4.0);
+  const double widths[] = {1e-3, 1e-12, 1e-20, 1e-100, 1e-300, std::numeric_limits<double>::min(), 1e-310,
+                           std::numeric_limits<double>::denorm_min()};
+  int failures = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3<double> a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
+    // c: b nudged off the line a-b by a tiny width along a random axis.
+    Vec3<double> c = b;
+    c[i % 3] += widths[(i / 3) % 8];
+    if (c == b) continue;
+    // With the exponent: the vector itself is below the double range for the last ones.
+    int e = 0;
+    const Vec3<double> n = mink::accurateCross(a, b, c, &e);
+    const Vec3<Q> x = (toQ3(b) - toQ3(a)).cross(toQ3(c) - toQ3(a));
+    // Scaled exactly to a largest component of 1 first (it may be below the double range).
+    Q big(0);
+    for (int k = 0; k < 3; ++k) big = std::max(big, CGAL::abs(x[k]));
+    const Vec3<double> ed(CGAL::to_double(x[0] / big), CGAL::to_double(x[1] / big), CGAL::to_double(x[2] / big));
+    // Compare directions, each scaled to unit length without underflow.
+    const double err = (n / n.stableNorm() - ed / ed.stableNorm()).norm();
+    if (!(err <= 1e-14) && failures++ < 5)
+      ADD_FAILURE() << "seed 9108 #" << i << ": direction off by " << err << "; n " << n.transpose() << ", exact "
+                    << ed.transpose();
+  }
+  EXPECT_EQ(failures, 0);
+  // The fuzzer's case, by hand: (b - a) x (c - a) = d (-3 - 2^-52, 1, 0) for d = 2^-1022.
+  const double d = std::numeric_limits<double>::min();
+  const Vec3<double> n =
+      mink::accurateCross(Vec3<double>(-1, 1 + std::ldexp(1.0, -52), -2), Vec3<double>(-2, -2, 0), Vec3<double>(-2, -2, d));
+  EXPECT_EQ(n[2], 0.0);
+  EXPECT_NEAR(n[0] / n[1], -3.0, 1e-15);
+  // A triangle one denormal wide (fuzz/regressions/face_normal_of_denormal_width): the
+  // cross product is denorm_min * (0, 1 + dm, 0.5 - dm), below the double range unless
+  // scaled; its direction must be (0, 2, 1) / sqrt(5).
+  const double dm = std::numeric_limits<double>::denorm_min();
+  int e = 0;
+  const Vec3<double> m = mink::accurateCross(Vec3<double>(-2, 0.5, -1), Vec3<double>(0, dm, dm), Vec3<double>(dm, dm, dm), &e);
+  EXPECT_LT((m / m.stableNorm() - Vec3<double>(0, 2, 1) / std::sqrt(5.0)).norm(), 1e-15) << m.transpose() << " 2^" << e;
+}
+
 TEST(Orient3dExact, Gmpq) {
   const unsigned seed = 9106u;
   std::mt19937 rng(seed);

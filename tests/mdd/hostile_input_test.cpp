@@ -255,6 +255,64 @@ TEST(MddHostile, RotatedTetrahedraDoNotHitTheIterationCap) {
   }
 }
 
+// Regression (fuzzer, fuzz/regressions/iteration_limit_sliver_chord; _integer_boxes is the
+// same bug with 39 near-integer points and is replayed by the fuzz run): P is five points
+// within 1e-12 of the plane x = -2, so M = P ⊕ −P (+ the offset of the poses) is a sheet
+// 2e-12 thick, symmetric about (-1, -1, 0), and the line t (1, 1, 0) crosses it there, at
+// t = -1 within 1e-11. Several faces of M on the sheet's side have the same ray
+// parameter up to rounding; the least computed one was a neighbour of the facet the line
+// crosses, its facet check failed, and mdd() answered IterationLimit after the
+// exhaustive fallback. The fallback now tries every face tied within rounding.
+TEST(MddHostile, SheetThinAsRoundingIsCrossed) {
+  const std::vector<V> pts = {V(-0x1p+1, -0x1p+1, 0x0p+0), V(-0x1.fffffffffep+0, -0x1.ffffffffffp+0, 0x1p+0),
+                              V(-0x1.00000000008p+1, -0x1.ffffffffcp+0, -0x1.ffffffff81p+0),
+                              V(-0x1.ffffffffffp+0, 0x0p+0, 0x1p+0),
+                              V(-0x1.fffffffffep+0, -0x1.fffffffffdp+0, -0x1.fffffffffcp-1)};
+  const auto P = ConvexPolyhedron<double>::fromPoints(pts);
+  Pose<double> pp, pq;
+  pp.translation = V(-2, 0, -2);
+  pq.translation = V(-1, 1, -2);
+  const V s(1, 1, 0);
+  mink::MddCache<double> cache;
+  for (int reps = 0; reps < 2; ++reps) {  // cold, then warm from the cache
+    const auto r = mink::mdd(P, pp, P, pq, s, cache);
+    ASSERT_EQ(r.status, MddStatus::Separated) << "usedFallback " << r.usedFallback;
+    EXPECT_NEAR(r.parameter, -1.0, 1e-11);
+    EXPECT_LT((r.witnessP - r.witnessQ - r.parameter * s).norm(), 1e-12);
+    // Both witnesses are near the sheet's centre: P's copy of it at (-2 + x, ...) etc.
+    EXPECT_NEAR(r.witnessP.x(), -4.0, 1e-11);
+    EXPECT_NEAR(r.witnessQ.x(), -3.0, 1e-11);
+  }
+}
+
+// Regression (fuzzer, fuzz/regressions/iteration_limit_grazing_centre_off_line): the line
+// of s grazes M (the fuzzer's slab clipping of the line against P ⊕ −Q over all
+// separating axes gives a chord of length ~1e-8 at translation -0.19959, parameter
+// -0.11523), and the poses are 5e-10 off orthonormal. The centre of duality, a
+// combination of support points of a nearly degenerate portal, came out 1e-7 off the
+// line; no face passed the facet check from it, and mdd() said IterationLimit. The last
+// resort is now the chord itself: the line clipped against every face plane of M.
+TEST(MddHostile, GrazingLineWithAnInaccurateCentreIsAnswered) {
+  const auto P = ConvexPolyhedron<double>::fromPoints({V(0, 0, 0), V(1, 0, 0), V(0, 1, 2), V(2, 2, 2)});
+  const auto Q = ConvexPolyhedron<double>::fromPoints(
+      {V(49, 49, 49), V(49, 2, 8), V(3, 3, 2), V(2, -35, -35), V(-35, -35, -35)});
+  Pose<double> pp, pq;
+  pp.rotation << 0.72527472527472536, -0.32967032967032961, 0.60439560439560436, 0.60439560439560436,
+      0.72527472527472536, -0.32967032967032961, -0.32967032967032961, 0.60439560486126565, 0.72527472527472536;
+  pp.translation = V(-1.0000000000318323, -1.0000000000318323, -1.0000000000854925);
+  pq.rotation << 0, 0, 1, 1, 0, 0, 0, 1.0000000004656613, 0;
+  pq.translation = V(-1.0000000000318323, -1.0000000000318323, -1.0000000000318323);
+  const V s(-1.0000000000318323, -1.0000000000318323, -1.0000000000318323);
+  const auto r = mink::mdd(P, pp, Q, pq, s);
+  ASSERT_NE(r.status, MddStatus::IterationLimit);
+  ASSERT_NE(r.status, MddStatus::NoContact);
+  // At this grazing angle the place along the line is ill-conditioned (the fuzzer's
+  // check is the distance to M's boundary, 6e-7 here); the witnesses must keep their
+  // contract within that.
+  EXPECT_NEAR(r.parameter, -0.11523, 1e-4);
+  EXPECT_LT((r.witnessP - r.witnessQ - r.parameter * s).norm(), 6e-7);
+}
+
 // Regression: found by the fuzzer (fuzz/regressions/witness_mismatch_tiny_direction) in an
 // intermediate, uncommitted state of the MDD search changes (witnessP - witnessQ was off
 // parameter * s by 1.125 along z); HEAD f5e3147 passes. A tiny direction (|s| ~ 2e-11) along

@@ -12,12 +12,20 @@
 //      expansion (two-sum), every product of three terms an exact expansion (two-product
 //      by fma, then scaling), and the sum of all of them an exact non-overlapping
 //      expansion whose largest component carries the sign.
-// Valid while no intermediate value overflows or underflows (|coordinates| within about
-// 1e-90 .. 1e90 for double); mink's inputs are validated as finite.
+//   3. Step 2 is exact while no product underflows: for double, while every non-zero
+//      coordinate is at least 2^-306 (about 8e-93) in magnitude (every input, difference
+//      and product is then a multiple of a power of two that stays representable). A
+//      smaller coordinate (1e-300 beside 1) sends step 2 to long double where it has
+//      the exponent range (x87 extended or binary128: 2^-16382), which holds every such
+//      product; where long double is double (MSVC), such inputs may get a wrong sign.
+// No intermediate value overflows while |coordinates| <= 2^296 (about 1e89), the bound
+// mink validates its inputs against (ScalarTraits::largestCoordinate()).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "mink/core/scalar_traits.hpp"
@@ -77,7 +85,31 @@ inline void scaleExpansion(const std::vector<F>& e, F b, std::vector<F>& h) {
 }
 
 template <class F>
+int exactOrient3d(const Vec3<F>& a, const Vec3<F>& b, const Vec3<F>& c, const Vec3<F>& d);
+
+/// Can exactOrient3d<double> underflow on these points (a non-zero coordinate below
+/// 2^-306: see the header comment), and has long double the range to do it instead?
+inline bool needsWiderExponent(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
+                               const Vec3<double>& d) {
+  if constexpr (std::numeric_limits<long double>::min_exponent > -4000) {
+    return false;  // long double is no wider than double here: nothing better to do
+  } else {
+    const double tiny = std::ldexp(1.0, -306);
+    for (const Vec3<double>* p : {&a, &b, &c, &d})
+      for (int i = 0; i < 3; ++i)
+        if ((*p)[i] != 0.0 && std::fabs((*p)[i]) < tiny) return true;
+    return false;
+  }
+}
+
+template <class F>
 int exactOrient3d(const Vec3<F>& a, const Vec3<F>& b, const Vec3<F>& c, const Vec3<F>& d) {
+  if constexpr (std::is_same<F, double>::value) {
+    if (needsWiderExponent(a, b, c, d)) {
+      using L = long double;
+      return exactOrient3d<L>(a.template cast<L>(), b.template cast<L>(), c.template cast<L>(), d.template cast<L>());
+    }
+  }
   // Rows u = b − a, v = c − a, w = d − a as exact two-term expansions.
   F u[3][2], v[3][2], w[3][2];
   for (int i = 0; i < 3; ++i) {
@@ -124,18 +156,79 @@ inline F diffOfProducts(F a, F b, F c, F d) {
   return s + (se + (pe - qe));
 }
 
+
+/// (uh + ul) × (vh + vl) for two-term expansions of order one, to about one ulp of its
+/// length (see accurateCross).
+template <class T>
+Vec3<T> crossOfExpansions(const Vec3<T>& uh, const Vec3<T>& ul, const Vec3<T>& vh, const Vec3<T>& vl) {
+  using std::abs;
+  const T eps = std::numeric_limits<T>::epsilon();
+  Vec3<T> n, err;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const T main = detail::diffOfProducts(uh[j], vh[k], uh[k], vh[j]);
+    const T c1 = uh[j] * vl[k], c2 = ul[j] * vh[k], c3 = uh[k] * vl[j], c4 = ul[k] * vh[j];
+    n[i] = main + ((c1 + c2) - (c3 + c4));
+    // Rounding of the sums above, plus the second-order terms left out.
+    err[i] = T(4) * eps * (abs(main) + abs(c1) + abs(c2) + abs(c3) + abs(c4)) + abs(ul[j] * vl[k]) +
+             abs(ul[k] * vl[j]);
+  }
+  // The corrections can cancel each other far above a tiny result (a face 1e-300 wide
+  // beside coordinates of size 1): then every term is summed exactly and rounded.
+  const T len = n.cwiseAbs().maxCoeff();
+  if (err.maxCoeff() <= T(16) * eps * len) return n;
+  std::vector<T> acc, tmp;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    acc.assign(1, T(0));
+    const T us[2] = {uh[j], ul[j]}, vs[2] = {vh[k], vl[k]}, uk[2] = {uh[k], ul[k]}, vj[2] = {vh[j], vl[j]};
+    for (int x = 0; x < 2; ++x)
+      for (int y = 0; y < 2; ++y) {
+        T h, l;
+        detail::twoProduct(us[x], vs[y], h, l);
+        for (T t : {h, l}) {
+          detail::growExpansion(acc, t, tmp);
+          acc.swap(tmp);
+        }
+        detail::twoProduct(uk[x], vj[y], h, l);
+        for (T t : {h, l}) {
+          detail::growExpansion(acc, T(-t), tmp);
+          acc.swap(tmp);
+        }
+      }
+    T sum = T(0);  // components in increasing magnitude, non-overlapping: ~1 ulp
+    for (T t : acc) sum += t;
+    n[i] = sum;
+  }
+  return n;
+}
 }  // namespace detail
 
-/// (b − a) × (c − a), accurate to about one ulp per component for floating-point T even
+/// (b − a) × (c − a), accurate to about one ulp of its length for floating-point T even
 /// when the triangle is a sliver (the plain formula loses all digits there); exact for
 /// exact T. Float is computed in double (exact products) and rounded once.
+/// With `exponent` (inexact T), returns n with (b − a) × (c − a) = n · 2^exponent, n's
+/// length about 2^998 times the sine of the triangle's angle at a: the direction of a
+/// face too small for its normal to be represented (1e-185 by 1e-300: the product is
+/// below the double range) is kept. Without it, the vector itself (which may then
+/// underflow).
 template <class T>
-Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, int* exponent = nullptr) {
   if constexpr (ScalarTraits<T>::isExact) {
+    (void)exponent;
     return (b - a).cross(c - a);
   } else if constexpr (std::is_same<T, float>::value) {
-    return accurateCross<double>(a.template cast<double>(), b.template cast<double>(), c.template cast<double>())
-        .template cast<float>();
+    const Vec3<double> ad = a.template cast<double>(), bd = b.template cast<double>(), cd = c.template cast<double>();
+    if (!exponent) return accurateCross<double>(ad, bd, cd).template cast<float>();
+    // The double result is of order 2^998: brought to order one before rounding to float.
+    Vec3<double> n = accurateCross<double>(ad, bd, cd, exponent);
+    const double big = n.cwiseAbs().maxCoeff();
+    if (big > 0.0) {
+      const int k = std::ilogb(big);
+      for (int i = 0; i < 3; ++i) n[i] = std::ldexp(n[i], -k);
+      *exponent += k;
+    }
+    return n.template cast<float>();
   } else {
     // Differences as exact two-term expansions u = uh + ul, v = vh + vl; the cross product
     // of the high parts carries the value, the low parts are first-order corrections.
@@ -144,16 +237,36 @@ Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
       detail::twoSum(b[i], T(-a[i]), uh[i], ul[i]);
       detail::twoSum(c[i], T(-a[i]), vh[i], vl[i]);
     }
-    Vec3<T> n;
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3, k = (i + 2) % 3;
-      const T main = detail::diffOfProducts(uh[j], vh[k], uh[k], vh[j]);
-      const T corr = (uh[j] * vl[k] + ul[j] * vh[k]) - (uh[k] * vl[j] + ul[k] * vh[j]);
-      n[i] = main + corr;
+    if (uh == Vec3<T>::Zero() || vh == Vec3<T>::Zero()) {
+      if (exponent) *exponent = 0;
+      return Vec3<T>::Zero();
     }
-    return n;
+    // Each difference scaled by a power of two to a largest component in [2^499, 2^500)
+    // (exact for every input below 2^499): the products of the high parts stay below
+    // 2^1002, and every term the result can consist of stays above the denormal range
+    // (the cross product of a triangle 2^-1074 wide is 2^-1074 times order one, and
+    // would round away unscaled). Only products of two low parts, far below the
+    // rounding of the result, may still underflow.
+    int scale = 0;
+    for (auto* hl : {&uh, &vh}) {
+      const int shift = 499 - std::ilogb(hl->cwiseAbs().maxCoeff());
+      Vec3<T>& h = *hl;
+      Vec3<T>& l = hl == &uh ? ul : vl;
+      for (int i = 0; i < 3; ++i) {
+        h[i] = std::ldexp(h[i], shift);
+        l[i] = std::ldexp(l[i], shift);
+      }
+      scale -= shift;
+    }
+    const Vec3<T> n = detail::crossOfExpansions(uh, ul, vh, vl);
+    if (exponent) {
+      *exponent = scale;
+      return n;
+    }
+    return Vec3<T>(std::ldexp(n[0], scale), std::ldexp(n[1], scale), std::ldexp(n[2], scale));
   }
 }
+
 
 /// Exact sign of det[b − a, c − a, d − a] (see the header comment).
 template <class T>
@@ -176,10 +289,13 @@ int orient3d(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>
                    abs(u[2]) * (abs(v[0] * w[1]) + abs(v[1] * w[0]));
     // Shewchuk's o3derrboundA for the rounded differences and products: (7 + 56 eps) eps.
     const T eps = std::numeric_limits<T>::epsilon() / T(2);
-    const T bound = (T(7) + T(56) * eps) * eps * perm;
+    // Plus the absolute error of results that fall below the normal range (tiny
+    // coordinates): at most half a denormal per rounding, times the factor applied after.
+    const T dm = std::numeric_limits<T>::denorm_min();
+    const T bound =
+        (T(7) + T(56) * eps) * eps * perm + dm * (T(2) * (abs(u[0]) + abs(u[1]) + abs(u[2])) + T(4));
     if (det > bound) return 1;
     if (-det > bound) return -1;
-    if (perm == T(0)) return 0;
     return detail::exactOrient3d(a, b, c, d);
   }
 }

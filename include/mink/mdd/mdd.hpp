@@ -22,6 +22,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mink/core/defaults.hpp"
@@ -191,7 +192,11 @@ class MddQuery {
     if (!(obj.num(best) > T(0)) || !facetHit(best)) {
       res_.usedFallback = true;
       best = exhaustive(obj);
-      if (stopped() || !best.valid() || !facetHit(best)) return MFace<T>();
+      if (stopped()) return MFace<T>();
+      if (!best.valid()) {
+        checkFailed_ = true;
+        return MFace<T>();
+      }
     }
     cache_.faceP = best.type == MddFaceType::FV ? best.a : fv.a;
     return remember(best);
@@ -255,30 +260,100 @@ class MddQuery {
   }
 
   /// Every FV, VF and EE face of M (each facet of M is one of them: its support sets are
-  /// a face of P, a face of Q, or two non-parallel edges whose arcs cross properly).
+  /// a face of P, a face of Q, or two non-parallel edges whose arcs cross properly): the
+  /// exit face whose facet the line crosses (facetHit, witnesses filled), else invalid.
+  ///
+  /// The exit is the face of least ray parameter u = (k − N·c) / (N·σ), but faces of M
+  /// within rounding of coplanar (a sheet 1e-12 thick, near-integer shapes) have u equal
+  /// up to rounding while their facets lie apart in the plane: the least computed u may
+  /// name a neighbour of the facet the line crosses. Every face whose u is within the
+  /// rounding slack of the least is an exit to that accuracy, so the first of those
+  /// (in order of u) that the line crosses answers. Exact T: exact ties only.
   MFace<T> exhaustive(const RayObjective<T>& obj) {
+    MFace<T> best;
+    forEachFace([&](const MFace<T>& m) {
+      if (obj.num(m) > T(0) && obj.better(m, best)) best = m;
+    });
+    if (!best.valid() || facetHit(best)) return best;
+    // u_m − u_best ≤ slack(m) + slack(best), slack(x) = numTol_ |N_x| / (N_x·σ); times
+    // both (positive) numerators.
+    const T nb = obj.num(best), db = obj.den(best), lb = norm(best.N);
+    std::vector<std::pair<T, MFace<T>>>& ties = tiesScratch_;
+    ties.clear();
+    forEachFace([&](const MFace<T>& m) {
+      const T nm = obj.num(m);
+      if (!(nm > T(0))) return;
+      const T gap = obj.den(m) * nb - db * nm;
+      if (gap <= numTol_ * (norm(m.N) * nb + lb * nm)) ties.push_back({obj.den(m) / nm, m});
+    });
+    std::sort(ties.begin(), ties.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (const auto& tie : ties)
+      if (facetHit(tie.second)) return tie.second;
+    return MFace<T>();
+  }
+
+  /// Visits every FV, VF and EE face of M once, in a fixed order.
+  template <class Visit>
+  void forEachFace(Visit&& visit) {
     const ConvexPolyhedron<T>& P = F_.P();
     const ConvexPolyhedron<T>& Q = F_.Q();
-    MFace<T> best;
     int hq = cache_.vertexQ, hp = cache_.vertexP;
     for (int f = 0; f < P.numFaces(); ++f) {
-      const MFace<T> m = F_.fv(f, hq);
       ++res_.visitedFV;
-      if (obj.num(m) > T(0) && obj.better(m, best)) best = m;
+      visit(F_.fv(f, hq));
     }
     for (int f = 0; f < Q.numFaces(); ++f) {
-      const MFace<T> m = F_.vf(f, hp);
       ++res_.visitedVF;
-      if (obj.num(m) > T(0) && obj.better(m, best)) best = m;
+      visit(F_.vf(f, hp));
     }
     for (int ep = 0; ep < P.numEdges(); ++ep)
       for (int eq = 0; eq < Q.numEdges(); ++eq) {
         const MFace<T> m = F_.ee(ep, eq);
         if (!m.valid()) continue;
         ++res_.visitedEE;
-        if (obj.num(m) > T(0) && obj.better(m, best)) best = m;
+        visit(m);
       }
-    return best;
+  }
+
+  /// True after a search whose every candidate failed the facet check, the exhaustive
+  /// fallback's included (not after the visit cap).
+  bool checkFailed() const { return checkFailed_; }
+
+  /// The line's chord of M, [tlo, thi] in parameters of s, by clipping the line against
+  /// the plane of every FV, VF and EE face (M is the intersection of their half-spaces),
+  /// and the faces that bound it: the last resort for lines that graze M within the
+  /// rounding of the centre of duality (which is then not reliably inside M). False if
+  /// the line misses M by more than the rounding slack.
+  bool chord(T& tlo, T& thi, MFace<T>& lo, MFace<T>& hi) {
+    bool outside = false;
+    forEachFace([&](const MFace<T>& m) {
+      const T ns = m.N.dot(s_);
+      if (ns == T(0)) {
+        if (m.k < -numTol_ * norm(m.N)) outside = true;
+        return;
+      }
+      const T t = m.k / ns;
+      if (ns > T(0) && (!hi.valid() || t < thi)) thi = t, hi = m;
+      if (ns < T(0) && (!lo.valid() || t > tlo)) tlo = t, lo = m;
+    });
+    if (outside || !lo.valid() || !hi.valid()) return false;
+    if (tlo > thi) {
+      // Empty by rounding only (within the slack, as a length along s): a touch.
+      if ((tlo - thi) * norm(s_) > numTol_) return false;
+      tlo = thi = (tlo + thi) / T(2);
+    }
+    return true;
+  }
+
+  /// Witnesses on the facet of M in face m's plane nearest the line (chord()'s faces,
+  /// which the line may miss by rounding).
+  void nearestWitnesses(const MFace<T>& m) {
+    if (facetHit(m)) return;
+    const ConvexPolyhedron<T>& P = F_.P();
+    const ConvexPolyhedron<T>& Q = F_.Q();
+    // facetHit left the facet's support sets in setP / setQ: the point of their
+    // difference's hull nearest the line (any slack above the scene's size accepts it).
+    hitSets(T(4) * (P.extent() + Q.extent() + F_.t().template lpNorm<1>()));
   }
 
   /// Does the line {t s} cross the face m itself (its own features, no tolerance: FV is
@@ -453,6 +528,15 @@ class MddQuery {
   const T& tolerance() const { return tol_; }
 
  private:
+  /// |n| for slack computations; 0 for exact T (whose slack numTol_ is 0).
+  static T norm(const Vec3<T>& n) {
+    if constexpr (ScalarTraits<T>::isExact) {
+      (void)n;
+      return T(0);
+    } else {
+      return n.norm();
+    }
+  }
   /// d1/√l1 > d2/√l2 without square roots (l1, l2 > 0).
   static bool cosineGreater(const T& d1, const T& l1, const T& d2, const T& l2) {
     if ((d1 >= T(0)) != (d2 >= T(0))) return d1 >= T(0);
@@ -475,6 +559,8 @@ class MddQuery {
   long long cap_;
   Vec3<T> u1_, u2_;
   Vec3<T> wP_ = Vec3<T>::Zero(), wQ_ = Vec3<T>::Zero();
+  std::vector<std::pair<T, MFace<T>>> tiesScratch_;
+  bool checkFailed_ = false;
 };
 
 /// |s| for reporting. Exact T has no sqrt: exact when |s|^2 == 1, otherwise a Newton
@@ -530,6 +616,38 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
   auto finish = [&](const T& param) {
     res.parameter = param;
     res.translation = param * slen;
+    // witnessP − witnessQ = parameter · s by construction where one side of the facet is
+    // a single vertex (FV, VF): the other witness is that vertex moved by the motion.
+    // Barycentric weights in a sliver fan triangle of the face would leave it 1e-5 off.
+    if constexpr (!ScalarTraits<T>::isExact) {
+      if (res.faceType == MddFaceType::EE && res.featureP >= 0 && res.featureQ >= 0) {
+        // An EE face is a parallelogram e_P − e_Q, as long and thin as its edges are
+        // unequal (a 3-unit edge against a 1e12 one): its fan triangles' barycentric
+        // weights are ill-conditioned there. Solve p0 + λ dp − (q0 + μ dq) = param s in
+        // the face's plane directly instead (Lagrange's identity; the edges are not
+        // parallel, or the face would not exist).
+        const auto ep = P.edgeVertices(res.featureP);
+        const auto eq = Q.edgeVertices(res.featureQ);
+        const Vec3<T> p0 = toWorld(P.vertex(ep.first)), dp = toWorld(P.vertex(ep.second)) - p0;
+        const Vec3<T> q0 = poseQ.rotation * Q.vertex(eq.first) + poseQ.translation;
+        const Vec3<T> dq = poseQ.rotation * Vec3<T>(Q.vertex(eq.second) - Q.vertex(eq.first));
+        const Vec3<T> N = dp.cross(dq), d = param * s - (p0 - q0);
+        const T n2 = N.squaredNorm();
+        if (n2 > T(0) && std::isfinite(n2)) {
+          const T lambda = N.dot(d.cross(dq)) / n2, mu = -N.dot(dp.cross(d)) / n2;
+          // Only where the line crosses this parallelogram (not a coplanar neighbour of
+          // the facet that the facet check accepted).
+          const T slack = T(1e-6);
+          if (lambda >= -slack && lambda <= T(1) + slack && mu >= -slack && mu <= T(1) + slack) {
+            res.witnessP = p0 + std::min(T(1), std::max(T(0), lambda)) * dp;
+            res.witnessQ = q0 + std::min(T(1), std::max(T(0), mu)) * dq;
+          }
+        }
+      }
+      const Vec3<T> r = res.witnessP - res.witnessQ - param * s;
+      if (cache.setQ.size() == 1 && cache.setP.size() > 1) res.witnessP -= r;
+      if (cache.setP.size() == 1 && cache.setQ.size() > 1) res.witnessQ += r;
+    }
     if (detail::absValue(res.translation) <= query.tolerance()) {
       res.status = MddStatus::Touching;
       res.distance = T(0);
@@ -582,16 +700,57 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
     res.visitedFV = res.visitedVF = res.visitedEE = 0;
   }
 
+  auto record = [&](const detail::MFace<T>& f) {
+    res.faceType = f.type;
+    res.featureP = f.a;
+    res.featureQ = f.b;
+    res.normal = detail::unitOrExact(Vec3<T>(RPt.transpose() * f.N));
+    res.witnessP = toWorld(query.witnessP());
+    res.witnessQ = toWorld(query.witnessQ());
+  };
+  // The last resort (inexact T) when a search cannot answer: no face passed its facet
+  // check (a line grazing M within the rounding of c), or, with the automatic caps, a
+  // cap was hit (shapes far below the rounding of their distance, 100 apart 1e20 along
+  // s, round M to a few points). The chord of M along the line, by clipping it against
+  // every face plane, answers; it needs no centre of duality. A cap the caller set
+  // (options.maxVisits) is respected: IterationLimit.
+  auto fromChord = [&]() {
+    if constexpr (!ScalarTraits<T>::isExact) {
+      if (query.checkFailed() || options.maxVisits < 0) {
+        detail::MFace<T> lo, hi;
+        T tlo = T(0), thi = T(0);
+        if (!query.chord(tlo, thi, lo, hi)) return noContact();
+        const detail::MFace<T>* answer = &hi;
+        T tAns = thi;
+        if (tlo > T(0)) {
+          answer = &lo, tAns = tlo;
+          res.status = MddStatus::Separated;
+        } else if (thi < T(0)) {
+          res.status = MddStatus::Separated;
+        } else {
+          if (detail::absValue(tlo) < detail::absValue(thi)) answer = &lo, tAns = tlo;  // tie: +s
+          res.status = MddStatus::Penetrating;
+        }
+        query.nearestWitnesses(*answer);
+        record(*answer);
+        // The witnesses are the facet's point nearest the line; at a grazing angle the
+        // contact's place along the line is ill-conditioned, so it is read off them.
+        const Vec3<T> d = query.witnessP() - query.witnessQ();
+        const T ss = sl.squaredNorm();
+        if (ss > T(0)) tAns = d.dot(sl) / ss;
+        return finish(tAns);
+      }
+    }
+    res.status = MddStatus::IterationLimit;
+    return res;
+  };
   int hp = cache.vertexP, hq = cache.vertexQ;
   const CentreOfDuality<T> cd = centreOfDuality(F, sl, hp, hq);
   cache.vertexP = hp;
   cache.vertexQ = hq;
   using Kind = typename CentreOfDuality<T>::Kind;
   if (cd.kind == Kind::Outside) return noContact();
-  if (cd.kind == Kind::Limit) {
-    res.status = MddStatus::IterationLimit;
-    return res;
-  }
+  if (cd.kind == Kind::Limit) return fromChord();
   if (cd.kind == Kind::Boundary) {
     T tlo, thi;
     int vp, vq;
@@ -612,21 +771,10 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
   const Vec3<T>& c = cd.c;
   const T alphaNum = c.dot(sl);  // sign of alpha
   auto param = [&](const detail::MFace<T>& f) { return T(f.k / f.N.dot(sl)); };
-  auto record = [&](const detail::MFace<T>& f) {
-    res.faceType = f.type;
-    res.featureP = f.a;
-    res.featureQ = f.b;
-    res.normal = detail::unitOrExact(Vec3<T>(RPt.transpose() * f.N));
-    res.witnessP = toWorld(query.witnessP());
-    res.witnessQ = toWorld(query.witnessQ());
-  };
   // Towards the origin first: it decides separated (the exit is the answer) or not.
   const Vec3<T> first = alphaNum > T(0) ? Vec3<T>(-sl) : Vec3<T>(sl);
   const detail::MFace<T> f1 = query.exitFace(first, c);
-  if (!f1.valid()) {
-    res.status = MddStatus::IterationLimit;
-    return res;
-  }
+  if (!f1.valid()) return fromChord();
   const T t1 = param(f1);
   record(f1);
   const bool originInside = alphaNum > T(0) ? t1 < T(0) : (alphaNum < T(0) ? t1 > T(0) : true);
@@ -636,10 +784,7 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
   }
   // Penetrating (or touching): the exit the other way, then the nearer one (d_min).
   const detail::MFace<T> f2 = query.exitFace(Vec3<T>(-first), c);
-  if (!f2.valid()) {
-    res.status = MddStatus::IterationLimit;
-    return res;
-  }
+  if (!f2.valid()) return fromChord();
   const T t2 = param(f2);
   res.status = MddStatus::Penetrating;
   // Tie: the exit along +s is reported.
@@ -650,7 +795,9 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
     return finish(t2);
   }
   // f1's witnesses were overwritten by the second facet check: recompute them.
-  query.facetHit(f1);
+  // (f1 may have been accepted by its own polygon, faceHit, which the facet check with
+  // its support sets can then miss by rounding.)
+  if (!query.facetHit(f1)) query.faceHit(f1);
   record(f1);
   return finish(t1);
 }

@@ -4,7 +4,10 @@
 // Built two ways, both ending in the same finishing step:
 //   fromPoints: convex hull by quickhull (Barber, Dobkin, Huhdanpaa 1996), every
 //               "above this face?" decided exactly (core/orientation.hpp): the result
-//               is the exact hull of the given numbers, in any scalar type;
+//               is the exact hull of the given numbers, in any scalar type (for
+//               floating-point T, a shape beyond 2^±64 in size is built at unit scale,
+//               and coordinates below 2^-1074 of that scale, 1e-300 in a 1e20 shape,
+//               are rounded to it first);
 //   fromMesh:   validation of a closed, consistently oriented, locally convex mesh
 //               (by van Heijenoort's theorem, local convexity of a closed connected
 //               surface implies global convexity);

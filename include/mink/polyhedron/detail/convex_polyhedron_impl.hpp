@@ -66,44 +66,78 @@ struct PolyhedronBuilder {
     }
   }
 
+  /// |(b − o) × (c − o)| as len · 2^exp, to compare triangles without underflow (the
+  /// cross product of a triangle 1e-185 by 1e-300 is below the double range).
+  struct Width {
+    T len = T(0);
+    int exp = 0;
+    bool operator>(const Width& w) const {
+      if (!(len > T(0))) return false;
+      if (!(w.len > T(0))) return true;
+      if constexpr (ScalarTraits<T>::isExact) {
+        return len > w.len;
+      } else {
+        return len > std::ldexp(w.len, w.exp - exp);
+      }
+    }
+  };
+  static Width width(const Vec3<T>& o, const Vec3<T>& b, const Vec3<T>& c, Vec3<T>* normal = nullptr) {
+    Width w;
+    Vec3<T> n;
+    if constexpr (ScalarTraits<T>::isExact) {
+      n = (b - o).cross(c - o);
+      w.len = n.squaredNorm();
+    } else {
+      n = accurateCross(o, b, c, &w.exp);
+      w.len = n.stableNorm();
+    }
+    if (normal) *normal = n;
+    return w;
+  }
+
   // Normal of a loop: for exact T its Newell normal; otherwise, for an exactly planar
   // loop, the accurate cross product of its widest fan triangle from the first corner
   // (about one ulp per component, where the textbook Newell sum loses every digit on
   // sliver faces), and for a non-planar loop (fromMesh, within its tolerance) the Newell
   // normal of the whole loop.
-  static Vec3<T> newell(const std::vector<Vec3<T>>& pts, const Loop& loop) {
+  /// `size` (optional): the face's size, to order faces by.
+  static Vec3<T> newell(const std::vector<Vec3<T>>& pts, const Loop& loop, Width* size = nullptr) {
     const Vec3<T>& o = pts[loop[0]];
+    Width dummy;
+    Width& widest = size ? *size : dummy;
+    widest = Width();
     if constexpr (ScalarTraits<T>::isExact) {
       // Exact already: the Newell normal (the documented one for exact T).
       Vec3<T> n = Vec3<T>::Zero();
       for (std::size_t i = 1; i + 1 < loop.size(); ++i) n += (pts[loop[i]] - o).cross(pts[loop[i + 1]] - o);
+      widest.len = n.squaredNorm();
       return n;
-    }
-    Vec3<T> best = Vec3<T>::Zero();
-    T best2 = T(0);
-    for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
-      const Vec3<T> n = accurateCross(o, pts[loop[i]], pts[loop[i + 1]]);
-      const T n2 = n.squaredNorm();
-      if (n2 > best2) {
-        best2 = n2;
-        best = n;
+    } else {
+      // The widest fan triangle's normal, scaled to order one (a face too small for its
+      // normal to be a double, 1e-185 by 1e-300, keeps its direction).
+      Vec3<T> best = Vec3<T>::Zero(), n;
+      for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
+        const Width w = width(o, pts[loop[i]], pts[loop[i + 1]], &n);
+        if (w > widest) {
+          widest = w;
+          best = n;
+        }
       }
+      if (loop.size() == 3) return best;
+      Vec3<T> sum = Vec3<T>::Zero();
+      for (std::size_t i = 1; i + 1 < loop.size(); ++i) sum += (pts[loop[i]] - o).cross(pts[loop[i + 1]] - o);
+      // Prefer the accurate triangle normal when the loop is exactly planar.
+      return isExactlyPlanar(pts, loop) ? best : sum;
     }
-    if (loop.size() == 3) return best;
-    Vec3<T> sum = Vec3<T>::Zero();
-    for (std::size_t i = 1; i + 1 < loop.size(); ++i) sum += (pts[loop[i]] - o).cross(pts[loop[i + 1]] - o);
-    // Prefer the accurate triangle normal when the loop is exactly planar.
-    return isExactlyPlanar(pts, loop) ? best : sum;
   }
+
 
   static bool isExactlyPlanar(const std::vector<Vec3<T>>& pts, const Loop& loop) {
     // The widest fan triangle spans the plane; every corner must be on it exactly.
     std::size_t k = 2;
     const Vec3<T>& o = pts[loop[0]];
     for (std::size_t i = 2; i < loop.size(); ++i)
-      if ((pts[loop[1]] - o).cross(pts[loop[i]] - o).squaredNorm() >
-          (pts[loop[1]] - o).cross(pts[loop[k]] - o).squaredNorm())
-        k = i;
+      if (width(o, pts[loop[1]], pts[loop[i]]) > width(o, pts[loop[1]], pts[loop[k]])) k = i;
     for (int v : loop)
       if (orient3d(o, pts[loop[1]], pts[loop[k]], pts[v]) != 0) return false;
     return true;
@@ -114,8 +148,18 @@ struct PolyhedronBuilder {
     if constexpr (ScalarTraits<T>::isExact) {
       return n;
     } else {
-      const T len = n.norm();
+      const T len = magnitude(n);
       return len > T(0) ? Vec3<T>(n / len) : n;
+    }
+  }
+
+  /// An increasing function of |n|: |n| itself, without underflow or overflow, for
+  /// inexact T; |n|^2 for exact T.
+  static T magnitude(const Vec3<T>& n) {
+    if constexpr (ScalarTraits<T>::isExact) {
+      return n.squaredNorm();
+    } else {
+      return n.stableNorm();
     }
   }
 
@@ -169,15 +213,14 @@ struct PolyhedronBuilder {
     const std::vector<int> twin0 = twinsBySorting(org, nxt);
 
     std::vector<Vec3<T>> rawN(nP), unitN(nP);
-    std::vector<T> size2(nP);
+    std::vector<Width> size(nP);
     for (int f = 0; f < nP; ++f) {
-      rawN[f] = newell(pts, polys[f]);
+      rawN[f] = newell(pts, polys[f], &size[f]);
       unitN[f] = testNormal(rawN[f]);
-      size2[f] = rawN[f].squaredNorm();
     }
     std::vector<int> order(nP);
     for (int f = 0; f < nP; ++f) order[f] = f;
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size2[b] < size2[a]; });
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size[a] > size[b]; });
 
     std::vector<int> group(nP, -1);
     std::vector<int> queue;
@@ -193,8 +236,7 @@ struct PolyhedronBuilder {
       const Loop& S = polys[seed];
       int k2 = 2;
       for (std::size_t i = 3; i < S.size(); ++i)
-        if ((pts[S[1]] - pts[S[0]]).cross(pts[S[i]] - pts[S[0]]).squaredNorm() >
-            (pts[S[1]] - pts[S[0]]).cross(pts[S[k2]] - pts[S[0]]).squaredNorm())
+        if (width(pts[S[0]], pts[S[1]], pts[S[i]]) > width(pts[S[0]], pts[S[1]], pts[S[k2]]))
           k2 = static_cast<int>(i);
       const Vec3<T>& a = pts[S[0]];
       const Vec3<T>& b = pts[S[1]];
@@ -329,7 +371,15 @@ struct PolyhedronBuilder {
     }
     if (P.vertexStart_.back() != nH) throw InvalidInput("internal: non-manifold vertex after merging");
     if (nV - P.numEdges() + nF != 2) throw InvalidInput("internal: Euler characteristic is not 2 after merging");
-    // Face planes.
+    facePlanes(P);
+    P.tolerance_ = tol;
+    P.extent_ = extent;
+    return P;
+  }
+
+  /// Face normals and offsets, and the interior point, from the vertices.
+  static void facePlanes(Poly& P) {
+    const int nF = P.numFaces();
     P.faceNormal_.resize(nF);
     P.faceOffset_.resize(nF);
     for (int f = 0; f < nF; ++f) {
@@ -344,12 +394,9 @@ struct PolyhedronBuilder {
         P.faceOffset_[f] = sum / T(static_cast<int>(L.size()));
       }
     }
-    P.tolerance_ = tol;
-    P.extent_ = extent;
     Vec3<T> sum = Vec3<T>::Zero();
     for (const auto& x : P.vertices_) sum += x;
-    P.interior_ = sum / T(nV);
-    return P;
+    P.interior_ = sum / T(P.numVertices());
   }
 
   // ---------------------------------------------------------------------------------
@@ -359,12 +406,23 @@ struct PolyhedronBuilder {
     if (points.size() < 4)
       throw InvalidInput("fromPoints: need at least 4 points, got " + std::to_string(points.size()));
     checkFinite(points, who, "point");
-    if constexpr (!ScalarTraits<T>::isExact) {
-      // A shape far from unit size (1e-100 or 1e80) is built at unit size, scaled by a
-      // power of two (exact both ways): orient3d's expansions and the normals' squared
-      // lengths would otherwise underflow or overflow. The hull does not depend on it.
-      T m = T(0);
+    T m = T(0);
+    if constexpr (!ScalarTraits<T>::isExact)
       for (const auto& p : points) m = std::max(m, p.cwiseAbs().maxCoeff());
+    return atUnitScale(points, m, options,
+                       [&](const std::vector<Vec3<T>>& pts, const HullOptions<T>& opt) { return build(pts, opt, who); });
+  }
+
+  /// build(points, options), on a copy scaled to unit size by a power of two (exact both
+  /// ways) when the largest coordinate m is beyond 2^±kRescaleExponent (1e-100 or 1e80):
+  /// the degeneracy tests' squared lengths would otherwise underflow or overflow.
+  /// Coordinates below 2^(e - 1074) (e: the exponent of m) are rounded to multiples of
+  /// it, the resolution of doubles at unit scale: a vertex is then its input point
+  /// within that (1e-300 in a 1e60 shape), not exactly.
+  template <class Build>
+  static Poly atUnitScale(const std::vector<Vec3<T>>& points, const T& m, const HullOptions<T>& options,
+                          Build&& build) {
+    if constexpr (!ScalarTraits<T>::isExact) {
       const int e = m > T(0) ? std::ilogb(m) : 0;
       if (e > kRescaleExponent || e < -kRescaleExponent) {
         std::vector<Vec3<T>> scaled(points.size());
@@ -372,17 +430,19 @@ struct PolyhedronBuilder {
           for (int k = 0; k < 3; ++k) scaled[i][k] = std::ldexp(points[i][k], -e);
         HullOptions<T> opt = options;
         if (opt.tolerance > T(0)) opt.tolerance = std::ldexp(opt.tolerance, -e);
-        Poly P = build(scaled, opt, who);
-        for (std::size_t i = 0; i < P.vertices_.size(); ++i)
-          for (int k = 0; k < 3; ++k) P.vertices_[i][k] = std::ldexp(P.vertices_[i][k], e);
-        for (auto& o : P.faceOffset_) o = std::ldexp(o, e);
-        for (int k = 0; k < 3; ++k) P.interior_[k] = std::ldexp(P.interior_[k], e);
+        Poly P = build(scaled, opt);
+        // Scaled back exactly: the hull is the exact hull of the scaled copy, whose
+        // coordinates below 2^(e - 1074) were rounded to that grid (a 1e-300 coordinate in
+        // a 1e60 shape); the vertices are those points, and the planes are theirs.
+        for (auto& x : P.vertices_)
+          for (int k = 0; k < 3; ++k) x[k] = std::ldexp(x[k], e);
+        facePlanes(P);
         P.tolerance_ = std::ldexp(P.tolerance_, e);
         P.extent_ = std::ldexp(P.extent_, e);
         return P;
       }
     }
-    return build(points, options, who);
+    return build(points, options);
   }
 
   /// Beyond 2^±this, fromPoints works on a copy scaled to unit size.
@@ -401,10 +461,23 @@ struct PolyhedronBuilder {
   // ---------------------------------------------------------------------------------
   static Poly fromMesh(const std::vector<Vec3<T>>& verts, const std::vector<Loop>& faces,
                        const HullOptions<T>& options) {
-    const char* who = "fromMesh";
     if (verts.empty()) throw InvalidInput("fromMesh: no vertices given");
     if (faces.empty()) throw InvalidInput("fromMesh: no faces given");
-    checkFinite(verts, who, "vertex");
+    checkFinite(verts, "fromMesh", "vertex");
+    // The scale of the vertices the faces use (bad indices are reported by meshBody).
+    T m = T(0);
+    if constexpr (!ScalarTraits<T>::isExact)
+      for (const Loop& L : faces)
+        for (int v : L)
+          if (v >= 0 && v < static_cast<int>(verts.size())) m = std::max(m, verts[v].cwiseAbs().maxCoeff());
+    return atUnitScale(verts, m, options, [&](const std::vector<Vec3<T>>& pts, const HullOptions<T>& opt) {
+      return meshBody(pts, faces, opt);
+    });
+  }
+
+  static Poly meshBody(const std::vector<Vec3<T>>& verts, const std::vector<Loop>& faces,
+                       const HullOptions<T>& options) {
+    const char* who = "fromMesh";
     const int nV = static_cast<int>(verts.size());
     const int nF = static_cast<int>(faces.size());
     auto faceName = [](int f) { return "face " + std::to_string(f); };
@@ -509,7 +582,7 @@ struct PolyhedronBuilder {
     for (int f = 0; f < nF; ++f) {
       const Loop& L = faces[f];
       const Vec3<T> raw = newell(verts, L);
-      if (!(raw.squaredNorm() > T(0)))
+      if (raw == Vec3<T>::Zero())
         throw InvalidInput("fromMesh: " + faceName(f) + " is degenerate (zero area)");
       n[f] = testNormal(raw);
       for (int v : L)
