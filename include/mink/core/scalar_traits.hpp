@@ -31,9 +31,8 @@ struct ScalarTraits {
   /// The largest magnitude of an input coordinate (or translation) that the exact
   /// predicates and the degeneracy tests handle without overflow of any intermediate
   /// value: 2^(0.29 · max_exponent), about 1.3e89 for double and 1.4e11 for float;
-  /// exact types have no limit. (Tiny coordinates are accepted: the predicates stay
-  /// exact on denormals in the hull tests; see the issue notes for the one known case,
-  /// 1e-300 beside 1, where an underflow in orient3d's expansion still misleads them.)
+  /// exact types have no limit. (Tiny coordinates are accepted: orient3d stays exact
+  /// on them, see core/orientation.hpp.)
   static T largestCoordinate() {
     if constexpr (isExact) {
       return T(0);
