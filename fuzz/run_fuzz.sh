@@ -14,13 +14,21 @@
 # Environment: MINK_FUZZ_BUILD_DIR (default /tmp/mink-fuzz-build), MINK_FUZZ_SECONDS
 #              (default 60), MINK_FUZZ_WORK_DIR (scratch; default a fresh mktemp dir),
 #              MINK_JOBS (build parallelism, default nproc), MINK_FUZZ_CMAKE_ARGS (extra
-#              configure arguments, e.g. -DMINK_FUZZ_INCLUDE_DIR=/other/include).
+#              configure arguments, e.g. -DMINK_FUZZ_INCLUDE_DIR=/other/include),
+#              MINK_FUZZ_SEED (fixed seed: a repeatable run).
 set -euo pipefail
 
 fuzz_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 repo="$(cd "$fuzz_dir/.." && pwd)"
 build="${MINK_FUZZ_BUILD_DIR:-/tmp/mink-fuzz-build}"
 seconds="${MINK_FUZZ_SECONDS:-60}"
+# MINK_FUZZ_SEED (e.g. 1): a fixed libFuzzer seed, so that the run is a repeatable
+# sequence of inputs (CI sets it: tests/run_all.sh); unset: a fresh seed, exploration.
+seed_arg=()
+if [[ -n "${MINK_FUZZ_SEED:-}" ]]; then seed_arg=(-seed="$MINK_FUZZ_SEED"); fi
+# MINK_FUZZ_RUNS: stop after this many inputs (with a fixed seed: exactly the inputs
+# a clean run was checked on; MINK_FUZZ_SECONDS still bounds the time).
+if [[ -n "${MINK_FUZZ_RUNS:-}" ]]; then seed_arg+=(-runs="$MINK_FUZZ_RUNS"); fi
 jobs="${MINK_JOBS:-$(nproc)}"
 work="${MINK_FUZZ_WORK_DIR:-$(mktemp -d /tmp/mink-fuzz-run.XXXXXX)}"
 
@@ -52,7 +60,7 @@ echo "== run_fuzz.sh: replaying $(ls "$fuzz_dir/corpus" | wc -l) seeds and $(ls 
 
 echo "== run_fuzz.sh: fuzzing for $seconds s (scratch corpus $work/corpus)"
 status=0
-"$fuzzer" "$work/corpus" -max_total_time="$seconds" -print_final_stats=1 -timeout=10 -rss_limit_mb=2048 \
+"$fuzzer" "$work/corpus" "${seed_arg[@]}" -max_total_time="$seconds" -print_final_stats=1 -timeout=10 -rss_limit_mb=2048 \
   -max_len=4096 -artifact_prefix="$work/artifacts/" > "$work/fuzz.log" 2>&1 || status=$?
 grep -E '^stat::' "$work/fuzz.log" || true
 execs="$(grep -E '^stat::number_of_executed_units' "$work/fuzz.log" | awk '{print $2}')"
