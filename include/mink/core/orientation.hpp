@@ -156,7 +156,6 @@ inline F diffOfProducts(F a, F b, F c, F d) {
   return s + (se + (pe - qe));
 }
 
-
 /// (uh + ul) × (vh + vl) for two-term expansions of order one, to about one ulp of its
 /// length (see accurateCross).
 template <class T>
@@ -266,7 +265,6 @@ Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, int*
     return Vec3<T>(std::ldexp(n[0], scale), std::ldexp(n[1], scale), std::ldexp(n[2], scale));
   }
 }
-
 
 /// Exact sign of det[b − a, c − a, d − a] (see the header comment).
 template <class T>
