@@ -347,6 +347,14 @@ void expectValidPolyhedron(const ConvexPolyhedron<T>& P, const std::string& cont
     MT_EXPECT(fails, std::adjacent_find(pts.begin(), pts.end()) == pts.end()) << "two vertices coincide";
   }
 
+  // The slack of the inexact checks below: the shape's tolerance, or for a shape built
+  // with tolerance 0 (exact hull, rounded planes) the rounding of its planes, 64 eps of
+  // its extent.
+  T slack = P.tolerance();
+  if constexpr (!mink::ScalarTraits<T>::isExact)
+    if (!(slack > T(0))) slack = T(64) * std::numeric_limits<T>::epsilon() * P.extent();
+  const Q slackQ = toQ(slack);
+
   // Extent as documented: |x|max + |y|max + |z|max over the vertices.
   {
     std::array<Q, 3> m = {Q(0), Q(0), Q(0)};
@@ -358,7 +366,7 @@ void expectValidPolyhedron(const ConvexPolyhedron<T>& P, const std::string& cont
     } else {
       // The extent is measured on the input, whose extreme coordinates are corners of
       // the exact hull; the tolerant hull keeps them up to the tolerance.
-      EXPECT_LE(CGAL::abs(toQ(P.extent()) - ext), 4 * toQ(P.tolerance()) + Q(1e-300))
+      EXPECT_LE(CGAL::abs(toQ(P.extent()) - ext), 4 * slackQ + Q(1e-300))
           << "extent " << dbl(P.extent()) << " vs " << dbl(ext);
     }
   }
@@ -401,8 +409,8 @@ void expectValidPolyhedron(const ConvexPolyhedron<T>& P, const std::string& cont
     }
   } else {
     using A = typename AccOf<T>::type;
-    const A tol = toAcc<A>(P.tolerance());
-    EXPECT_GT(P.tolerance(), T(0));
+    const A tol = toAcc<A>(slack);
+    EXPECT_GE(P.tolerance(), T(0));
     const double eps = static_cast<double>(std::numeric_limits<T>::epsilon());
     const A unitSlack = toAcc<A>(T(16) * std::numeric_limits<T>::epsilon());
     std::vector<std::array<A, 3>> X(V), N(F);

@@ -440,7 +440,7 @@ struct Counts {
 
 template <class T>
 void runCase(const std::string& name, unsigned seed, const std::vector<Vec3<T>>& pts, Expect expect,
-             Counts counts = {}) {
+             Counts counts = {}, const mink::HullOptions<T>& options = {}) {
   std::ostringstream ctx;
   ctx << name << " [T=" << typeName<T>() << ", seed " << seed << ", " << pts.size() << " points]";
   SCOPED_TRACE(ctx.str());
@@ -448,7 +448,7 @@ void runCase(const std::string& name, unsigned seed, const std::vector<Vec3<T>>&
   const auto t0 = clock::now();
   std::optional<ConvexPolyhedron<T>> P;
   try {
-    P.emplace(ConvexPolyhedron<T>::fromPoints(pts));
+    P.emplace(ConvexPolyhedron<T>::fromPoints(pts, options));
   } catch (const std::exception& e) {
     ADD_FAILURE() << "fromPoints threw: " << e.what();
     return;
@@ -459,6 +459,7 @@ void runCase(const std::string& name, unsigned seed, const std::vector<Vec3<T>>&
   const auto t2 = clock::now();
   expectValidPolyhedron(*P, ctx.str());
   if constexpr (!mink::ScalarTraits<T>::isExact) {
+    if (options.tolerance < T(0)) {
     // Documented default: kHullToleranceFactor * eps * (|x|max + |y|max + |z|max of the input).
     QP m = {Q(0), Q(0), Q(0)};
     for (const auto& p : pts)
@@ -467,6 +468,7 @@ void runCase(const std::string& name, unsigned seed, const std::vector<Vec3<T>>&
     const double eps = static_cast<double>(std::numeric_limits<T>::epsilon());
     EXPECT_NEAR(dbl(P->extent()), ext, 4 * eps * ext);
     EXPECT_NEAR(dbl(P->tolerance()), mink::defaults::kHullToleranceFactor * eps * ext, 1e-6 * dbl(P->tolerance()));
+    }
   }
   expectSameHull(pts, *P, ref, conv);
   if constexpr (!mink::ScalarTraits<T>::isExact) {
@@ -825,6 +827,180 @@ TEST(HullVsCgal, DoubleNearlyCoplanar) {
                       Expect::EqualAndTolerance);
       ++seed;
     }
+}
+
+// With tolerance 0 fromPoints accepts any set that is not exactly coplanar, so also sets
+// within rounding of a plane. The first simplex was oriented by the sign of a rounded
+// product, which such a sliver can get wrong: the hull came out inside out (fuzzer,
+// fuzz/regressions/hull_sliver_simplex_inside_out: 1e-185 wide, 1e-294 thick, with
+// denormal coordinates). Its orientation is exact now. Here: that set, and points of
+// random planes rounded to double (off their plane by rounding only), at unit scale, at
+// 2^-600 and at 2^200, each against CGAL's exact hull.
+TEST(HullVsCgal, SliversWithZeroTolerance) {
+  mink::HullOptions<double> zero;
+  zero.tolerance = 0.0;
+  const std::vector<D3> fuzz = {
+      {0x0.0000000000001p-1022, -0x1.9999999999999p-614, -0x1.9999999999999p-614},
+      {0x0.000000000000dp-1022, -0x1.9999999999999p-614, -0x1.9999999999999p-614},
+      {-0x1.9999999999999p-614, -0x1.9999999999999p-614, 0x0.2000299999999p-1022},
+      {0x1.1000200030002p-975, 0x1.20100020003p-975, 0x0.000000103fb02p-1022},
+      {0x0.0020000020002p-1022, 0x1.20000030202p-991, 0x0.0000000010101p-1022}};
+  runCase<double>("fuzzer's sliver: 1e-185 wide, 1e-294 thick", 0u, toT<double>(fuzz), Expect::Equal, {}, zero);
+  const unsigned seed = 502u;
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int built = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const Eigen::Vector3d n = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
+    const Eigen::Vector3d a = n.unitOrthogonal(), b = n.cross(a);
+    const Eigen::Vector3d o = 3.0 * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    const int m = 4 + trial % 9;
+    const int e = trial % 3 == 0 ? 0 : (trial % 3 == 1 ? -600 : 200);
+    std::vector<D3> pts;
+    for (int i = 0; i < m; ++i) {
+      const Eigen::Vector3d x = o + u(rng) * a + u(rng) * b;
+      pts.push_back({std::ldexp(x[0], e), std::ldexp(x[1], e), std::ldexp(x[2], e)});
+    }
+    // Exactly coplanar sets (rare) are rejected, as they must be.
+    bool coplanar = true;
+    for (int i = 3; i < m && coplanar; ++i) {
+      const auto v = toT<double>({pts[0], pts[1], pts[2], pts[i]});
+      coplanar = mink::orient3d(v[0], v[1], v[2], v[3]) == 0;
+    }
+    if (coplanar) continue;
+    std::ostringstream name;
+    name << "sliver " << trial << ": " << m << " points of a plane, scale 2^" << e;
+    runCase<double>(name.str(), seed, toT<double>(pts), Expect::Equal, {}, zero);
+    ++built;
+  }
+  EXPECT_GT(built, 40);
+}
+
+// fromMesh on the faces of such hulls: a closed convex mesh, so accepted (with its own
+// default tolerance), with the same vertices and faces; reversed, rejected as inward. The
+// fuzzer's case (fuzz/regressions/from_mesh_needle_volume_sign): a needle 1 long, 1e-27
+// wide and 1e-40 thick (at unit scale), whose signed volume summed in floating point came
+// out negative; the orientation is decided exactly now. Every mesh is checked convex here
+// exactly first (each vertex on or below each face, by CGAL's orientation on Epick).
+TEST(HullVsCgal, FromMeshOfSliverHulls) {
+  mink::HullOptions<double> zero;
+  zero.tolerance = 0.0;
+  std::vector<std::vector<D3>> sets = {{{0x1.1630101010101p-1007, -0x1.aaaaaaaaaaa01p-341, 0x1.3aaabaaaaaaaap-1007},
+                                        {0x1.4002501010103p-1021, 0x1.1010101010001p-1007, 0x1.1010301010301p-1007},
+                                        {0x1.3010101030103p-1007, 0x1.3010103030103p-1007, 0x1.3030103f40301p-1007},
+                                        {0x0.1000003034003p-1022, -0x1.0020204000001p-351, -0x1.aaaaaaaaaaaaap-341},
+                                        {-0x1.aaaaaaaaaaaaap-341, -0x1.aaaaaaaaaaaaap-341, -0x1.aaaaaaaaaaaaap-341},
+                                        {-0x1.aaaaaaaaaaaaap-341, -0x1.aaaaaaaaaabaap-341, -0x1.aaaaaaaaaaaaap-341},
+                                        {0x1.0aaaaaaaaaaaap-252, 0x1.030303030303p-252, 0x1.030303030303p-252}}};
+  std::mt19937 rng(504u);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 30; ++trial) {
+    // Points of a random plane, rounded (off it by rounding only), at three scales.
+    const Eigen::Vector3d n = Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
+    const Eigen::Vector3d a = n.unitOrthogonal(), b = n.cross(a);
+    const int e = trial % 3 == 0 ? 0 : (trial % 3 == 1 ? -600 : 200);
+    std::vector<D3> pts;
+    for (int i = 0; i < 5 + trial % 6; ++i) {
+      const Eigen::Vector3d x = u(rng) * a + u(rng) * b + Eigen::Vector3d(0.5, 0.25, 0.125);
+      pts.push_back({std::ldexp(x[0], e), std::ldexp(x[1], e), std::ldexp(x[2], e)});
+    }
+    sets.push_back(pts);
+  }
+  int meshes = 0;
+  for (std::size_t k = 0; k < sets.size(); ++k) {
+    const auto pts = toT<double>(sets[k]);
+    std::optional<ConvexPolyhedron<double>> hull;
+    try {
+      hull.emplace(ConvexPolyhedron<double>::fromPoints(pts, zero));
+    } catch (const mink::InvalidInput&) {
+      continue;  // exactly coplanar
+    }
+    const std::string what = "set " + std::to_string(k);
+    std::vector<std::vector<int>> loops, reversed;
+    for (int f = 0; f < hull->numFaces(); ++f) {
+      std::vector<int> loop(hull->faceVertices(f).begin(), hull->faceVertices(f).end());
+      loops.push_back(loop);
+      std::reverse(loop.begin(), loop.end());
+      reversed.push_back(loop);
+    }
+    const auto& V = hull->vertices();
+    for (const auto& loop : loops)
+      for (std::size_t v = 0; v < V.size(); ++v) {
+        const auto P = [&](int i) { return Epick::Point_3(V[i].x(), V[i].y(), V[i].z()); };
+        const auto o = CGAL::orientation(P(loop[0]), P(loop[1]), P(loop[2]), P(static_cast<int>(v)));
+        ASSERT_NE(o, CGAL::POSITIVE) << what << ": vertex " << v << " above a face (not a convex mesh)";
+      }
+    try {
+      const auto M = ConvexPolyhedron<double>::fromMesh(V, loops);
+      EXPECT_EQ(M.numVertices(), hull->numVertices()) << what;
+      EXPECT_EQ(M.numFaces(), hull->numFaces()) << what;
+    } catch (const mink::InvalidInput& ex) {
+      ADD_FAILURE() << what << ": fromMesh rejected a closed convex mesh: " << ex.what();
+    }
+    EXPECT_THROW(ConvexPolyhedron<double>::fromMesh(V, reversed), mink::InvalidInput) << what;
+    ++meshes;
+  }
+  EXPECT_GT(meshes, 25);
+}
+
+// Needle faces across the double range: a face 2^286 long whose short edge is 2^-783
+// (fuzzer, fuzz/regressions/needle_face_normal_underflows). Its fan from the sharp corner
+// underflowed (angle 2^-2138) to a zero normal, so the face did not merge with the
+// coplanar face beside it and a vertex in the middle of an edge stayed a "corner". Here:
+// that set, and random sets of a few points of size 2^k beside a few of size 2^-j, each
+// against CGAL's exact hull, with every face normal unit.
+TEST(HullVsCgal, NeedleFacesAcrossTheRange) {
+  // A shape beyond 2^±64 is built at unit scale: its coordinates are rounded to multiples
+  // of 2^(e - 1074), e the exponent of its largest coordinate (convex_polyhedron.hpp).
+  // The reference is the exact hull of those rounded points.
+  auto onGrid = [](std::vector<D3> pts) {
+    double m = 0.0;
+    for (const auto& x : pts)
+      for (double c : x) m = std::max(m, std::abs(c));
+    const int e = std::ilogb(m);
+    if (e > 64 || e < -64)
+      for (auto& x : pts)
+        for (double& c : x) c = std::ldexp(std::ldexp(c, -e), e);
+    return pts;
+  };
+  auto unitNormals = [](const ConvexPolyhedron<double>& P, const std::string& what) {
+    for (int f = 0; f < P.numFaces(); ++f)
+      EXPECT_NEAR(P.faceNormal(f).norm(), 1.0, 1e-12) << what << " face " << f;
+  };
+  const std::vector<D3> fuzz = {{0x1.5630101p-1007, -0x1.1d1d1d1010301p+286, 0x1.6060606060606p-927},
+                                {0x1.6060606060606p-927, 0x1.6060606060606p-927, 0x1.6060606060606p-927},
+                                {0x0p+0, 0x1.606p-927, 0x1.6060606060606p-927},
+                                {0x1.6060606060606p-927, 0x1.6060606060606p-927, -0x1.1d1d106060606p+286},
+                                {-0x1.1d1d1d1d1d1d1p+286, -0x1.dd1d1d1d1d1d1p+278, 0x1.0d1d1d1d111d1p-1007},
+                                {0x1.0010101030103p-967, 0x0.0000000000101p-1022, 0x1.f0f0f0f0003p-783},
+                                {0x1.f0f0f0f0f0f0fp-783, 0x1.00000060f0f0fp-1007, -0x1.1030101056301p+286},
+                                {-0x1.1d1d1d1d1d1d1p+286, -0x1.1d111d1d15dd1p+286, 0x1.30103030100d1p-1007}};
+  runCase<double>("fuzzer's needle: 2^286 by 2^-783", 0u, toT<double>(onGrid(fuzz)), Expect::Equal);
+  unitNormals(ConvexPolyhedron<double>::fromPoints(toT<double>(fuzz)), "fuzzer's needle");
+  const unsigned seed = 503u;
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> sgn(0, 1), big(200, 290), small(-1070, -600);
+  std::uniform_real_distribution<double> u(1.0, 2.0);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int kb = big(rng), ks = small(rng);
+    std::vector<D3> pts;
+    // Large points on the coordinate axes (and one diagonal), tiny ones near the origin:
+    // the hull's faces through the origin region are needles.
+    for (int i = 0; i < 4 + trial % 3; ++i) {
+      D3 x = {0.0, 0.0, 0.0};
+      x[i % 3] = (sgn(rng) ? 1 : -1) * std::ldexp(u(rng), kb);
+      if (i == 3) x = {-std::ldexp(u(rng), kb), -std::ldexp(u(rng), kb), 0.0};
+      pts.push_back(x);
+    }
+    for (int i = 0; i < 2 + trial % 4; ++i)
+      pts.push_back({std::ldexp(u(rng), ks) * (sgn(rng) ? 1 : 0), std::ldexp(u(rng), ks) * (sgn(rng) ? 1 : 0),
+                     std::ldexp(u(rng), ks) * (sgn(rng) ? 1 : -1)});
+    std::ostringstream name;
+    name << "needles " << trial << ": 2^" << kb << " beside 2^" << ks;
+    runCase<double>(name.str(), seed, toT<double>(onGrid(pts)), Expect::Equal);
+    unitNormals(ConvexPolyhedron<double>::fromPoints(toT<double>(pts)), name.str());
+  }
 }
 
 // Shrunk from "grid 3x3x3 (scale 0.1) with 1-ulp jitter" in float (fuzzing, seed 62):

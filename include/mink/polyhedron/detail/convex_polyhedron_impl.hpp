@@ -115,12 +115,33 @@ struct PolyhedronBuilder {
     } else {
       // The widest fan triangle's normal, scaled to order one (a face too small for its
       // normal to be a double, 1e-185 by 1e-300, keeps its direction).
+      // The mantissa n is |cross| / (2^-998 |u| |v|) (u, v: the fan triangle's edges at
+      // its corner), so a needle seen from its sharp corner can still underflow (a
+      // triangle 2^286 long whose short edge is 2^-783: its angle there is 2^-2138, the
+      // one at the short edge 2^-1069). Then the fans from the other corners are tried,
+      // until one gives n clear of the denormal range (about one ulp per component).
       Vec3<T> best = Vec3<T>::Zero(), n;
-      for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
-        const Width w = width(o, pts[loop[i]], pts[loop[i + 1]], &n);
-        if (w > widest) {
-          widest = w;
-          best = n;
+      const std::size_t m = loop.size();
+      const T reliable = std::ldexp(T(1), std::numeric_limits<T>::min_exponent - 1 + std::numeric_limits<T>::digits);
+      for (std::size_t s = 0; s < m; ++s) {
+        const Vec3<T>& os = pts[loop[s]];
+        Width w0;
+        Vec3<T> b0 = Vec3<T>::Zero();
+        for (std::size_t i = 1; i + 1 < m; ++i) {
+          const Width w = width(os, pts[loop[(s + i) % m]], pts[loop[(s + i + 1) % m]], &n);
+          if (w > w0) {
+            w0 = w;
+            b0 = n;
+          }
+        }
+        if (s == 0 || (!(widest.len > T(0)) && w0.len > T(0))) {
+          widest = w0;
+          best = b0;
+        }
+        if (b0.cwiseAbs().maxCoeff() >= reliable) {
+          widest = w0;
+          best = b0;
+          break;
         }
       }
       if (loop.size() == 3) return best;
@@ -591,15 +612,53 @@ struct PolyhedronBuilder {
                              " is off its plane)");
     }
     {
-      // Six times the signed volume, relative to a mesh vertex (exact for exact T).
-      const Vec3<T>& o = usedPts[0];
-      T vol6 = T(0);
-      for (const Loop& L : faces)
-        for (std::size_t i = 1; i + 1 < L.size(); ++i)
-          vol6 += (verts[L[0]] - o).dot((verts[L[i]] - o).cross(verts[L[i + 1]] - o));
-      if (!(vol6 > T(0)))
-        throw InvalidInput(
-            "fromMesh: faces are oriented inward (clockwise seen from outside) or the mesh has no volume");
+      const char* inward =
+          "fromMesh: faces are oriented inward (clockwise seen from outside) or the mesh has no volume";
+      if constexpr (ScalarTraits<T>::isExact) {
+        // Six times the signed volume, relative to a mesh vertex (exact).
+        const Vec3<T>& o = usedPts[0];
+        T vol6 = T(0);
+        for (const Loop& L : faces)
+          for (std::size_t i = 1; i + 1 < L.size(); ++i)
+            vol6 += (verts[L[0]] - o).dot((verts[L[i]] - o).cross(verts[L[i + 1]] - o));
+        if (!(vol6 > T(0))) throw InvalidInput(inward);
+      } else {
+        // The signed volume in floating point has the wrong sign on a needle 1 by 1e-27 by
+        // 1e-40 (its terms cancel far above its value). The orientation of a consistently
+        // oriented closed mesh is that of any one face against a vertex off its plane:
+        // the largest face, against the vertex farthest from its plane, decided exactly.
+        int best = 0;
+        Width widest;
+        for (int f = 0; f < nF; ++f) {
+          Width w;
+          newell(verts, faces[f], &w);
+          if (w > widest) widest = w, best = f;
+        }
+        const Loop& L = faces[best];
+        int k = 2;
+        for (std::size_t i = 3; i < L.size(); ++i)
+          if (width(verts[L[0]], verts[L[1]], verts[L[i]]) > width(verts[L[0]], verts[L[1]], verts[L[k]]))
+            k = static_cast<int>(i);
+        // The vertex farthest from its plane, unless that distance is within the rounding
+        // of the face's normal (a mesh thinner than that: 1e-40 on a face 1 long); then
+        // the first vertex off the plane, exactly. Vertices of the face itself are skipped
+        // (a face planar only within the tolerance may have one above its fan triangle).
+        std::vector<char> onFace(nV, 0);
+        for (int v : L) onFace[v] = 1;
+        auto side = [&](int v) { return orient3d(verts[L[0]], verts[L[1]], verts[L[k]], verts[v]); };
+        int far = -1;
+        T depth = T(0);
+        for (int v = 0; v < nV; ++v) {
+          if (!used[v] || onFace[v]) continue;
+          const T d = absValue(n[best].dot(verts[v] - verts[L[0]]));
+          if (far < 0 || d > depth) far = v, depth = d;
+        }
+        int o = 0;
+        if (far >= 0 && depth > T(16) * ScalarTraits<T>::epsilon() * extent) o = side(far);
+        for (int v = 0; o == 0 && v < nV; ++v)
+          if (used[v] && !onFace[v]) o = side(v);
+        if (!(o < 0)) throw InvalidInput(inward);
+      }
     }
     // Local convexity at every vertex: each vertex adjacent to v lies on or below every
     // face plane around v. With a closed connected surface this makes the mesh convex

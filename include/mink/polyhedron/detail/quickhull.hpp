@@ -166,8 +166,13 @@ class Quickhull {
     }
     if (!(best * best > tolS * tolS * nrm.squaredNorm()))
       throw InvalidInput("fromPoints: all points are coplanar (within the tolerance)");
-    // Orient so that i3 lies below the plane of (i0, i1, i2).
-    if (bestSigned > T(0)) std::swap(i1, i2);
+    (void)bestSigned;
+    // Orient so that i3 lies below the plane of (i0, i1, i2). Decided exactly: every later
+    // step trusts this orientation, and the rounded products above can give a sliver
+    // simplex (input within rounding of a plane, accepted with tolerance 0: 1e-185 wide,
+    // 1e-294 thick) the wrong sign, and the hull came out inside out.
+    const int o = exactSimplex(i0, i1, i2, i3);
+    if (o > 0) std::swap(i1, i2);
     const int f0 = makeFace(i0, i1, i2);
     const int f1 = makeFace(i0, i3, i1);
     const int f2 = makeFace(i1, i3, i2);
@@ -183,6 +188,44 @@ class Quickhull {
       if (i == i0 || i == i1 || i == i2 || i == i3) continue;
       assign(i, all);
     }
+  }
+
+  /// orient3d(i0, i1, i2, i3), after replacing i2 or i3 where the rounded choices above
+  /// made a simplex that is exactly degenerate: i2 exactly on the line i0 i1, or i3 exactly
+  /// in the plane i0 i1 i2 (each replacement an O(n) scan, only for such input). Throws
+  /// when every point is exactly collinear or coplanar with them.
+  int exactSimplex(int i0, int i1, int& i2, int& i3) const {
+    const int n = static_cast<int>(pts_.size());
+    if (collinear(i0, i1, i2)) {
+      int j = 0;
+      while (j < n && collinear(i0, i1, j)) ++j;
+      if (j == n) throw InvalidInput("fromPoints: all points are collinear");
+      i2 = j;
+    }
+    int o = orient3d(pts_[i0], pts_[i1], pts_[i2], pts_[i3]);
+    for (int j = 0; o == 0 && j < n; ++j) {
+      o = orient3d(pts_[i0], pts_[i1], pts_[i2], pts_[j]);
+      if (o != 0) i3 = j;
+    }
+    if (o == 0) throw InvalidInput("fromPoints: all points are coplanar");
+    return o;
+  }
+
+  /// Are points a, b, c exactly collinear? Iff their projections on the three coordinate
+  /// planes are; each projection's orientation is the exact orient3d of the projected
+  /// points with a unit point off the plane (whose coordinates 0 and 1 keep it exact).
+  bool collinear(int a, int b, int c) const {
+    for (int axis = 0; axis < 3; ++axis) {
+      auto lift = [&](int i) {
+        Vec3<T> x = pts_[i];
+        x[axis] = T(0);
+        return x;
+      };
+      Vec3<T> up = Vec3<T>::Zero();
+      up[axis] = T(1);
+      if (orient3d(lift(a), lift(b), lift(c), up) != 0) return false;
+    }
+    return true;
   }
 
   void link(int fa, int ea, int fb, int eb) {
