@@ -69,7 +69,9 @@ double checkDouble(const mink::MddResult<double>& r, const mink_test::MddRefResu
   EXPECT_NE(r.status, MddStatus::IterationLimit);
   if (r.status == MddStatus::NoContact || r.status == MddStatus::IterationLimit) return 0.0;
   // Status must match whenever the exact answer is clear of the touching tolerance.
-  if (std::abs(ref.translation) > 1e-9) EXPECT_EQ(r.status, toMink(ref.status)) << ref.translation;
+  if (std::abs(ref.translation) > 1e-9) {
+    EXPECT_EQ(r.status, toMink(ref.status)) << ref.translation;
+  }
   double err = std::abs(r.translation - ref.translation);
   if (ref.tie) err = std::min(err, std::abs(r.translation + ref.translation));
   EXPECT_LE(err, tol) << "mink " << r.translation << " exact " << ref.translation;

@@ -81,5 +81,24 @@ typename Derived::Scalar norm(const Eigen::MatrixBase<Derived>& v) {
   return v.norm();
 }
 
+/// v scaled by a power of two (exact) so that its largest |component| is in [1, 2), for
+/// inexact scalars; v itself for exact scalars and for zero. The direction of a vector
+/// of 1e-232 (a portal edge between shapes 1e-236 wide) or of 1e172 (the normal of
+/// 1e86-long edges) survives where its norm, dot products or their products would
+/// underflow or overflow.
+template <class T>
+Eigen::Matrix<T, 3, 1> unitOrder(const Eigen::Matrix<T, 3, 1>& v) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    return v;
+  } else {
+    const T big = v.cwiseAbs().maxCoeff();
+    if (!(big > T(0)) || !ScalarTraits<T>::isFinite(big)) return v;
+    using std::ilogb;
+    using std::ldexp;
+    const int e = ilogb(big);
+    return Eigen::Matrix<T, 3, 1>(ldexp(v[0], -e), ldexp(v[1], -e), ldexp(v[2], -e));
+  }
+}
+
 }  // namespace detail
 }  // namespace mink

@@ -105,6 +105,8 @@ class MddQuery {
       // the facet checks accept faces the line misses).
       numTol_ = T(defaults::kMddTouchToleranceFactor) * ScalarTraits<T>::epsilon() * scene;
       tol_ = opt.touchTolerance >= T(0) ? opt.touchTolerance : numTol_;
+      scene_ = scene;
+      sLength_ = s.norm();
     }
     const long long faces = P.numFaces() + Q.numFaces() + 64;
     cap_ = opt.maxVisits >= 0 ? opt.maxVisits : defaults::kMddVisitFactor * faces;
@@ -319,6 +321,23 @@ class MddQuery {
   /// fallback's included (not after the visit cap).
   bool checkFailed() const { return checkFailed_; }
 
+  /// Inexact T: does the line {t s} run within the rounding slack of face m's plane over
+  /// the whole scene (every t with |t s| up to the scene size, which holds M's chord)?
+  /// Then k / (N·s) is a ratio of two rounding errors, not a place on the line (integer
+  /// boxes touching along a face of M once Q is turned by a 3-4-5 rotation: the EE face
+  /// there gave t = -0.33 where the exact chord is [-0.2, 0]), and the line meets M only
+  /// in that plane's facet: case 2 of section IV-A, answered by grazing(). Exact T:
+  /// never (from a strictly interior c the exit face has N·σ > 0 exactly).
+  bool lineInPlane(const MFace<T>& m) const {
+    if constexpr (ScalarTraits<T>::isExact) {
+      (void)m;
+      return false;
+    } else {
+      return absValue(m.k) + scene_ * absValue(m.N.dot(s_)) / sLength_ <= numTol_ * m.N.norm();
+    }
+  }
+
+
   /// The line's chord of M, [tlo, thi] in parameters of s, by clipping the line against
   /// the plane of every FV, VF and EE face (M is the intersection of their half-spaces),
   /// and the faces that bound it: the last resort for lines that graze M within the
@@ -328,6 +347,9 @@ class MddQuery {
     bool outside = false;
     forEachFace([&](const MFace<T>& m) {
       const T ns = m.N.dot(s_);
+      // A plane holding the line to rounding bounds nothing along it (its k / (N·s) is
+      // noise); the line is in its half-space.
+      if (lineInPlane(m)) return;
       if (ns == T(0)) {
         if (m.k < -numTol_ * norm(m.N)) outside = true;
         return;
@@ -556,6 +578,7 @@ class MddQuery {
   MddCache<T>& cache_;
   MddResult<T>& res_;
   T tol_, numTol_;
+  T scene_ = T(0), sLength_ = T(1);  // inexact T: the scene size (as numTol_'s) and |s|
   long long cap_;
   Vec3<T> u1_, u2_;
   Vec3<T> wP_ = Vec3<T>::Zero(), wQ_ = Vec3<T>::Zero();
@@ -583,8 +606,9 @@ Vec3<T> unitOrExact(const Vec3<T>& n) {
   if constexpr (ScalarTraits<T>::isExact) {
     return n;
   } else {
-    const T len = n.norm();
-    return len > T(0) ? Vec3<T>(n / len) : n;
+    const Vec3<T> m = unitOrder(n);
+    const T len = m.norm();
+    return len > T(0) ? Vec3<T>(m / len) : m;
   }
 }
 
@@ -672,6 +696,10 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
       if (ns == T(0) || (ns > T(0) ? hi.valid() : lo.valid())) continue;
       (m.type == MddFaceType::FV ? res.visitedFV : m.type == MddFaceType::VF ? res.visitedVF : res.visitedEE) += 1;
       if (!query.faceHit(m)) continue;
+      if (query.lineInPlane(m)) {
+        lo = hi = detail::MFace<T>();  // a grazing line: the cold path decides
+        break;
+      }
       (ns > T(0) ? hi : lo) = m;
       (ns > T(0) ? thi : tlo) = m.k / ns;
     }
@@ -744,21 +772,18 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
     res.status = MddStatus::IterationLimit;
     return res;
   };
-  int hp = cache.vertexP, hq = cache.vertexQ;
-  const CentreOfDuality<T> cd = centreOfDuality(F, sl, hp, hq);
-  cache.vertexP = hp;
-  cache.vertexQ = hq;
-  using Kind = typename CentreOfDuality<T>::Kind;
-  if (cd.kind == Kind::Outside) return noContact();
-  if (cd.kind == Kind::Limit) return fromChord();
-  if (cd.kind == Kind::Boundary) {
+  // The line lies in the supporting plane w·x = k of M (k = 0 up to rounding): it meets
+  // M only in that plane's facet, in [tlo, thi] (case 2 of section IV-A).
+  auto fromGrazing = [&](const Vec3<T>& wIn) {
+    // To unit order: w's norm scales the support sets' slack.
+    const Vec3<T> w = detail::unitOrder(wIn);
     T tlo, thi;
     int vp, vq;
-    if (!query.grazing(cd.w, tlo, thi, vp, vq)) return noContact();
+    if (!query.grazing(w, tlo, thi, vp, vq)) return noContact();
     res.faceType = MddFaceType::Grazing;
     res.featureP = vp;
     res.featureQ = vq;
-    res.normal = detail::unitOrExact(Vec3<T>(RPt.transpose() * cd.w));
+    res.normal = detail::unitOrExact(Vec3<T>(RPt.transpose() * w));
     const T param = (tlo <= T(0) && thi >= T(0)) ? T(0) : (tlo > T(0) ? tlo : thi);
     // Witnesses: the contact is on the facet; report the support vertices' pair moved
     // onto the line (exact contact points need the segment, which a caller rarely uses).
@@ -766,16 +791,26 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
     res.witnessQ = res.witnessP - param * s;
     res.status = MddStatus::Separated;
     return finish(param);
-  }
+  };
+  int hp = cache.vertexP, hq = cache.vertexQ;
+  const CentreOfDuality<T> cd = centreOfDuality(F, sl, hp, hq);
+  cache.vertexP = hp;
+  cache.vertexQ = hq;
+  using Kind = typename CentreOfDuality<T>::Kind;
+  if (cd.kind == Kind::Outside) return noContact();
+  if (cd.kind == Kind::Limit) return fromChord();
+  if (cd.kind == Kind::Boundary) return fromGrazing(cd.w);
   // Interior: c = alpha * s strictly inside M.
   const Vec3<T>& c = cd.c;
   const T alphaNum = c.dot(sl);  // sign of alpha
-  auto param = [&](const detail::MFace<T>& f) { return T(f.k / f.N.dot(sl)); };
   // Towards the origin first: it decides separated (the exit is the answer) or not.
   const Vec3<T> first = alphaNum > T(0) ? Vec3<T>(-sl) : Vec3<T>(sl);
   const detail::MFace<T> f1 = query.exitFace(first, c);
   if (!f1.valid()) return fromChord();
-  const T t1 = param(f1);
+  // An exit face whose plane holds the line to rounding: c is on M's boundary, not
+  // inside it, and the line grazes M along that face.
+  if (query.lineInPlane(f1)) return fromGrazing(f1.N);
+  const T t1 = f1.k / f1.N.dot(sl);
   record(f1);
   const bool originInside = alphaNum > T(0) ? t1 < T(0) : (alphaNum < T(0) ? t1 > T(0) : true);
   if (!originInside) {
@@ -785,7 +820,8 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
   // Penetrating (or touching): the exit the other way, then the nearer one (d_min).
   const detail::MFace<T> f2 = query.exitFace(Vec3<T>(-first), c);
   if (!f2.valid()) return fromChord();
-  const T t2 = param(f2);
+  if (query.lineInPlane(f2)) return fromGrazing(f2.N);
+  const T t2 = f2.k / f2.N.dot(sl);
   res.status = MddStatus::Penetrating;
   // Tie: the exit along +s is reported.
   const bool takeSecond = detail::absValue(t2) < detail::absValue(t1) ||

@@ -13,6 +13,7 @@
 // function the search maximises; comparisons cross-multiply (denominators are > 0).
 #pragma once
 
+#include <cmath>
 #include <utility>
 
 #include "mink/core/defaults.hpp"
@@ -139,7 +140,15 @@ class PairFrame {
     const Vec3<T> q0 = q(vq.first);
     // Q's edge direction from its own coordinates, then rotated: q(b) − q(a) would lose
     // it entirely when Q is small against its offset (a 1e-29 shape placed at 2).
-    const Vec3<T> dp = P_.vertex(vp.second) - p0, dq = R_ * Vec3<T>(Q_.vertex(vq.second) - Q_.vertex(vq.first));
+    Vec3<T> dp = P_.vertex(vp.second) - p0, dq = R_ * Vec3<T>(Q_.vertex(vq.second) - Q_.vertex(vq.first));
+    if constexpr (!ScalarTraits<T>::isExact) {
+      // Each edge direction scaled by a power of two (exact) to unit order: the normal of
+      // 1e86-long edges is 1e172 and its k 1e258, and the searches' cross-multiplied
+      // comparisons (and |N|^2 |dp|^2 |dq|^2 below) overflowed, so that no EE face of two
+      // such shapes existed; 1e-200-long edges underflowed the same way.
+      dp = unitOrder(dp);
+      dq = unitOrder(dq);
+    }
     Vec3<T> N = dp.cross(dq);
     if constexpr (!ScalarTraits<T>::isExact) {
       // Edges parallel up to rounding (exact quarter turns of symmetric shapes make them
