@@ -68,6 +68,60 @@ bool triangleLocation(const std::pair<std::pair<T, T>, int>& pa, const std::pair
   loc.weight[0] = T(1) - wb - wc;
   loc.weight[1] = wb;
   loc.weight[2] = wc;
+  if constexpr (!ScalarTraits<T>::isExact) {
+    // Three points collinear up to rounding (the hull kept a point in the middle of an
+    // edge, by a rounded orientation) or a sliver: A is (nearly) noise and so are the
+    // weights (seen: 0.25, 0.5, 0.25, naming a point 1.17 from the origin, where the
+    // points are of size 3). The check is the residual: if the weights do not rebuild
+    // the origin to rounding, the origin's projection on the longest side (which it lies
+    // within the triangle's width of) is taken when it is nearer.
+    auto at = [&](const OriginLocation<T>& l, const std::pair<T, T>* const* q) {
+      T x = T(0), y = T(0);
+      for (int i = 0; i < l.count; ++i) x += l.weight[i] * q[i]->first, y += l.weight[i] * q[i]->second;
+      return std::max(absValue(x), absValue(y));
+    };
+    const std::pair<T, T>* abc[3] = {&a, &b, &c};
+    const T size = std::max({absValue(a.first), absValue(a.second), absValue(b.first), absValue(b.second),
+                             absValue(c.first), absValue(c.second)});
+    T r = at(loc, abc);
+    if (!(r <= T(16) * ScalarTraits<T>::epsilon() * size)) {
+      // An origin on a side gets a tiny negative weight on the far corner (-3.6e-14 on a
+      // corner 4.6e5 away: a residual of 1.7e-8): the weights clamped at 0 and summed to
+      // one rebuild it from the side's ends.
+      OriginLocation<T> clamped = loc;
+      T sum = T(0);
+      for (int i = 0; i < 3; ++i) sum += clamped.weight[i] = std::max(T(0), clamped.weight[i]);
+      if (sum > T(0)) {
+        for (int i = 0; i < 3; ++i) clamped.weight[i] /= sum;
+        const T rc = at(clamped, abc);
+        if (rc < r) loc = clamped, r = rc;
+      }
+    }
+    if (!(r <= T(16) * ScalarTraits<T>::epsilon() * size)) {
+      auto d2 = [](const std::pair<T, T>& p, const std::pair<T, T>& q) {
+        const T dx = q.first - p.first, dy = q.second - p.second;
+        return dx * dx + dy * dy;
+      };
+      const T ab = d2(a, b), ac = d2(a, c), bc = d2(b, c);
+      const std::pair<std::pair<T, T>, int>* p = &pa;
+      const std::pair<std::pair<T, T>, int>* q = &pb;
+      if (ac >= ab && ac >= bc) q = &pc;
+      if (bc > ab && bc > ac) p = &pb, q = &pc;
+      const T dx = q->first.first - p->first.first, dy = q->first.second - p->first.second;
+      const T len2 = dx * dx + dy * dy;
+      if (len2 > T(0)) {
+        OriginLocation<T> seg;
+        const T l = std::min(T(1), std::max(T(0), (-p->first.first * dx - p->first.second * dy) / len2));
+        seg.count = 2;
+        seg.id[0] = p->second;
+        seg.id[1] = q->second;
+        seg.weight[0] = T(1) - l;
+        seg.weight[1] = l;
+        const std::pair<T, T>* pq[2] = {&p->first, &q->first};
+        if (at(seg, pq) < r) loc = seg;
+      }
+    }
+  }
   return true;
 }
 
