@@ -208,6 +208,8 @@ struct Scene {
   const mink::Pose<double>* poseQ = nullptr;
   const V* s = nullptr;
   std::vector<std::vector<int>> rawFaces[2];  // faces given to fromMesh in mode 4
+  int mode[2] = {-1, -1};                    // buildShape's mode per shape
+  double tolerance[2] = {-1, -1};            // HullOptions::tolerance per shape
   int building = 0;                          // 0: P, 1: Q
 } gScene;
 
@@ -240,6 +242,12 @@ void printPose(const char* name, const mink::Pose<double>* pose) {
     }
     std::fprintf(stderr, "\n");
   }
+  static const char* modes[] = {"fromPoints", "fromPoints", "fromMesh(hull loops)", "fromMesh(hull fans)",
+                                 "fromMesh(byte faces)"};
+  for (int k = 0; k < 2; ++k)
+    if (gScene.mode[k] >= 0)
+      std::fprintf(stderr, "%s built by %s, HullOptions::tolerance %a (%.17g)\n", k == 0 ? "P" : "Q",
+                   modes[gScene.mode[k]], gScene.tolerance[k], gScene.tolerance[k]);
   printPose("poseP", gScene.poseP);
   printPose("poseQ", gScene.poseQ);
   if (gScene.s) std::fprintf(stderr, "s: %.17g %.17g %.17g\n", (*gScene.s)[0], (*gScene.s)[1], (*gScene.s)[2]);
@@ -428,6 +436,8 @@ bool buildShape(Decoder& in, const std::vector<V>& pts, Shape& out) {
     hopt.tolerance = in.special();
     customTol = hopt.tolerance >= 0;
   }
+  gScene.mode[gScene.building] = mode;
+  gScene.tolerance[gScene.building] = hopt.tolerance;
   try {
     if (mode <= 1 || mode == 2 || mode == 3) {
       auto hull = ConvexPolyhedron<double>::fromPoints(pts, hopt);
@@ -525,8 +535,12 @@ void checkQuery(const Shape& SP, const Shape& SQ, const mink::Pose<double>& pose
     threw = true;
     why = e.what();
   }
-  if (threw && posesOk && !sBad) fail("mdd rejected valid arguments: " + why);
+  // Shapes too thin at an edge for their unit normals (edgesResolved() false; only with a
+  // hull tolerance of 0) are rejected by both queries.
+  const bool shapesOk = SP.poly.edgesResolved() && SQ.poly.edgesResolved();
+  if (threw && posesOk && !sBad && shapesOk) fail("mdd rejected valid arguments: " + why);
   if (!threw && (posesBad || sBad)) fail("mdd accepted a non-finite / zero direction, a NaN touchTolerance or a bad pose");
+  if (!threw && !shapesOk) fail("mdd accepted a shape whose edges its normals do not resolve");
   bool hit = false, hitWarm = false, ithrew = false;
   try {
     hit = mink::intersects(SP.poly, poseP, SQ.poly, poseQ);
@@ -535,8 +549,9 @@ void checkQuery(const Shape& SP, const Shape& SQ, const mink::Pose<double>& pose
     ithrew = true;
     why = e.what();
   }
-  if (ithrew && posesOk) fail("intersects rejected valid poses: " + why);
+  if (ithrew && posesOk && shapesOk) fail("intersects rejected valid poses: " + why);
   if (!ithrew && posesBad) fail("intersects accepted a bad pose");
+  if (!ithrew && !shapesOk) fail("intersects accepted a shape whose edges its normals do not resolve");
   if (threw || ithrew || !SP.checkable || !SQ.checkable) return;
 
   // --- the reference ---

@@ -24,6 +24,11 @@ std::atomic<long> gAllocations{0};
 }  // namespace
 
 #if MINK_COUNT_ALLOCATIONS
+// GCC 12 flags free() in a replacement operator delete as mismatched with operator new,
+// although the replacement operator new allocates with malloc (the pair is consistent).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
 void* operator new(std::size_t n) {
   if (gCounting.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(n ? n : 1)) return p;

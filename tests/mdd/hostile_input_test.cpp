@@ -470,3 +470,40 @@ TEST(MddHostile, TouchingWitnessesKeepTheirContract) {
 }
 
 }  // namespace
+
+namespace {
+
+// A shape built with hull tolerance 0 may have an edge so sharp that its two unit face
+// normals are opposite to rounding: a lens 2 wide and 1e-20 thick (interior dihedral
+// 1e-20 rad). Its Gauss-map arcs then cannot say which way the edge turns (the fuzzer's
+// fuzz/regressions/sharp_edge_normals_opposite_rejected: a sliver 5e25 wide and 1e-103
+// thick lost its EE faces and mdd() answered 3e24 inside M). The hull is exact and kept;
+// mdd() and intersects() reject it, naming the shape. Reference: the lens's faces, known
+// by construction (two triangles back to back), and a lens 1e-6 thick that is accepted.
+TEST(MddHostile, ShapesTooThinForTheirNormalsAreRejected) {
+  mink::HullOptions<double> zero;
+  zero.tolerance = 0.0;
+  auto lens = [&](double h) {
+    return ConvexPolyhedron<double>::fromPoints({V(-1, 0, 0), V(1, 0.5, 0), V(1, -0.5, 0), V(0.2, 0.1, h)}, zero);
+  };
+  const auto thin = lens(1e-20);
+  ASSERT_EQ(thin.numFaces(), 4);
+  EXPECT_FALSE(thin.edgesResolved());
+  const auto ok = lens(1e-6);
+  EXPECT_TRUE(ok.edgesResolved());
+  EXPECT_TRUE(box(1).edgesResolved());
+  Pose<double> far;
+  far.translation = V(5, 0, 0);
+  const auto B = box(1);
+  expectRejected([&] { (void)mink::mdd(thin, Pose<double>(), B, far, V(1, 0, 0)); }, "mdd: P has an edge",
+                 "mdd, thin P");
+  expectRejected([&] { (void)mink::mdd(B, Pose<double>(), thin, far, V(1, 0, 0)); }, "mdd: Q has an edge",
+                 "mdd, thin Q");
+  expectRejected([&] { (void)mink::intersects(thin, Pose<double>(), B, far); }, "opposite to rounding",
+                 "intersects, thin P");
+  const auto r = mink::mdd(ok, Pose<double>(), B, far, V(1, 0, 0));
+  EXPECT_EQ(r.status, MddStatus::Separated);
+  EXPECT_NEAR(r.translation, -3.0, 1e-12);  // Q (x in [4, 6]) moves by -3 to touch x = 1
+}
+
+}  // namespace

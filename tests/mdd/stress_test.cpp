@@ -1003,7 +1003,9 @@ TEST(MddStress, FuzzerScenes) {
     const auto r = scene("shapes of 1e-232 at 15, grazing", P, P, RP, Mat3d::Identity(), Vec3d(15, 15, 15),
                          Vec3d(15, 15, 15), Vec3d(3.8157368271180168e-236, 3.8157368271180168e-236, 7.7736227414388061e-304),
                          15.0);
-    if (r.status != MddStatus::NoContact) EXPECT_NEAR(r.normal.norm(), 1.0, 1e-12);
+    if (r.status != MddStatus::NoContact) {
+      EXPECT_NEAR(r.normal.norm(), 1.0, 1e-12);
+    }
   }
   {
     // witnesses_grazing_face_exact_contact: integer shapes touching exactly along a face of

@@ -73,6 +73,12 @@ RelativePose<T> relativePose(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
                              const Pose<T>& poseQ, MddCache<T>& cache) {
   checkPose(poseP, "poseP");
   checkPose(poseQ, "poseQ");
+  for (const auto* X : {&P, &Q})
+    if (!X->edgesResolved())
+      throw InvalidInput(std::string("mdd: ") + (X == &P ? "P" : "Q") +
+                         " has an edge whose two face normals are opposite to rounding (a dihedral angle "
+                         "below about 64 eps, built with a hull tolerance of 0): too thin for the Gauss-map "
+                         "tests in this scalar type");
   if (cache.shapeP != &P || cache.shapeQ != &Q) {
     cache.faceP = cache.vertexP = cache.vertexQ = -1;
     cache.exitFaces[0] = cache.exitFaces[1] = MddCachedFace{};

@@ -165,6 +165,13 @@ class ConvexPolyhedron {
   /// The average of the vertices: a point strictly inside the polyhedron (exact for
   /// exact T), made once at construction so queries never pay O(n) for one.
   const Vec3<T>& interiorPoint() const { return interior_; }
+  /// False when, for inexact T, some edge's two face normals are opposite within
+  /// defaults::kMddParallelEdgeFactor eps (|n_f + n_g| below it: an interior dihedral
+  /// angle of about 1e-14 rad in double or less, possible only with a hull tolerance of
+  /// 0). The shape is exact, but its unit normals no longer say which way such an edge
+  /// turns, so the Gauss-map tests of mdd() and intersects() cannot be trusted on it and
+  /// those reject it. Always true for exact T.
+  bool edgesResolved() const { return edgesResolved_; }
 
   // ---- support (extreme vertex) ----
   /// A vertex maximising direction . x. Hill-climbs the vertex graph from `hint`:
@@ -196,6 +203,7 @@ class ConvexPolyhedron {
   T tolerance_ = T(0);
   T extent_ = T(0);
   Vec3<T> interior_ = Vec3<T>::Zero();
+  bool edgesResolved_ = true;
   std::shared_ptr<detail::DerivedSlots> derived_;
 };
 

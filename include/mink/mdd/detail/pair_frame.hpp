@@ -146,8 +146,13 @@ class PairFrame {
       // 1e86-long edges is 1e172 and its k 1e258, and the searches' cross-multiplied
       // comparisons (and |N|^2 |dp|^2 |dq|^2 below) overflowed, so that no EE face of two
       // such shapes existed; 1e-200-long edges underflowed the same way.
-      dp = unitOrder(dp);
-      dq = unitOrder(dq);
+      // Only outside 2^±64 (a test of two maxima on the hot path of SEARCH-EE): the ratio
+      // the searches compare does not depend on N's length.
+      const T lo = T(5.42101086242752217e-20), hi = T(1.8446744073709552e19);  // 2^-64, 2^64
+      for (Vec3<T>* d : {&dp, &dq}) {
+        const T big = d->cwiseAbs().maxCoeff();
+        if (big > hi || big < lo) *d = unitOrder(*d);
+      }
     }
     Vec3<T> N = dp.cross(dq);
     if constexpr (!ScalarTraits<T>::isExact) {

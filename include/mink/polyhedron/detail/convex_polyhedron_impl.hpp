@@ -418,6 +418,14 @@ struct PolyhedronBuilder {
     Vec3<T> sum = Vec3<T>::Zero();
     for (const auto& x : P.vertices_) sum += x;
     P.interior_ = sum / T(P.numVertices());
+    P.edgesResolved_ = true;
+    if constexpr (!ScalarTraits<T>::isExact) {
+      const T floor = T(defaults::kMddParallelEdgeFactor) * ScalarTraits<T>::epsilon();
+      for (int e = 0; e < P.numEdges() && P.edgesResolved_; ++e) {
+        const auto fg = P.edgeFaces(e);
+        P.edgesResolved_ = (P.faceNormal_[fg.first] + P.faceNormal_[fg.second]).cwiseAbs().maxCoeff() > floor;
+      }
+    }
   }
 
   // ---------------------------------------------------------------------------------
