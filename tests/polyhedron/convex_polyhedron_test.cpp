@@ -1291,6 +1291,29 @@ TYPED_TEST(Support, RandomHullRandomDirections) {
   }
 }
 
+// Two hull corners 2^-1022 apart (fuzzer, fuzz/regressions/support_across_an_edge_below_rounding):
+// the values d . v of the two are equal in floating point, and the climb stopped at the
+// one whose only way up is the tiny edge (0.13 where the maximum is 0.34), so mdd()
+// built an FV face on a non-supporting vertex and answered a point 0.4 inside M.
+TEST(SupportDouble, EdgeShorterThanTheRounding) {
+  using T = double;
+  const unsigned seed = 7004u;
+  std::mt19937 rng(seed);
+  const std::vector<Vec3<T>> pts = {P3<T>(0, -1, 1), P3<T>(0x1p-1022, -1, 1), P3<T>(1, 0.5, 1),
+                                    P3<T>(1, 0.5, 0.5), P3<T>(0.5, 1, 0.5), P3<T>(-2, 0, 0)};
+  const auto P = ConvexPolyhedron<T>::fromPoints(pts);
+  ASSERT_EQ(P.numVertices(), 6);
+  const SupportReference<T> ref(P);
+  Failures fails;
+  for (int k = 0; k < 5000; ++k) {
+    const Vec3<T> d = randomDirection<T>(rng);
+    for (int h = 0; h < P.numVertices(); ++h)
+      ref.check(d, {h}, false,
+                [&] { return "seed " + std::to_string(seed) + " direction #" + std::to_string(k) + " " + str(d); },
+                fails);
+  }
+}
+
 TYPED_TEST(Support, BoxTies) {
   using T = TypeParam;
   const unsigned seed = 7002u;

@@ -70,5 +70,13 @@ constexpr int kMddExitPortalSteps = 48;
 /// Unit: multiples of eps. Safe range: 4 .. 1e4.
 constexpr double kMddParallelEdgeFactor = 64.0;
 
+/// MDD, inexact scalars: a face of M that the line of s meets at a sine below this is not
+/// accepted on its certificate alone (the line crossing the face's own polygon, without
+/// a search: cached faces and the faces around the exit-portal estimate); the searches
+/// and the facet check decide instead. Its line parameter k / (N·s) carries the rounding
+/// of the scene times 1 / sine. Unit: sine of the angle between s and the face plane.
+/// Safe range: 0 .. 0.1 (smaller accepts more faces without a search).
+constexpr double kMddCertificateSine = 1.0 / 256.0;
+
 }  // namespace defaults
 }  // namespace mink

@@ -246,7 +246,7 @@ class MddQuery {
     res_.visitedFV += 1;
     res_.visitedVF += 1;
     const MFace<T> best = obj.better(vf, fv) ? vf : fv;
-    if (obj.num(best) > T(0) && faceHit(best)) {
+    if (obj.num(best) > T(0) && wellConditioned(best) && faceHit(best)) {
       hit = best;
       return true;
     }
@@ -263,7 +263,8 @@ class MddQuery {
         ++res_.visitedEE;
         if (obj.better(m, bestEE)) bestEE = m;
       }
-    if (obj.num(bestEE) > T(0) && obj.better(bestEE, best) && faceHit(bestEE)) hit = bestEE;
+    if (obj.num(bestEE) > T(0) && obj.better(bestEE, best) && wellConditioned(bestEE) && faceHit(bestEE))
+      hit = bestEE;
     return true;
   }
 
@@ -326,6 +327,22 @@ class MddQuery {
   /// True after a search whose every candidate failed the facet check, the exhaustive
   /// fallback's included (not after the visit cap).
   bool checkFailed() const { return checkFailed_; }
+
+  /// May face m be accepted on its certificate alone (faceHit, no search)? Inexact T:
+  /// only if the line meets its plane at a sine of at least
+  /// defaults::kMddCertificateSine. Nearer grazing, k / (N·s) carries the rounding of the
+  /// scene times 1 / sine, and the certificate itself cannot tell a crossing from a line
+  /// that passes within rounding of an edge of the face (a 1e59 shape against one of
+  /// size 1: the face at a sine of 7e-12 gave t = 1e54 where a face beside it, crossed
+  /// at a large angle, ends the chord at 1.7). The searches then decide.
+  bool wellConditioned(const MFace<T>& m) const {
+    if constexpr (ScalarTraits<T>::isExact) {
+      (void)m;
+      return true;
+    } else {
+      return absValue(m.N.dot(s_)) >= T(defaults::kMddCertificateSine) * m.N.norm() * sLength_;
+    }
+  }
 
   /// Inexact T: does the line {t s} run within the rounding slack of face m's plane over
   /// the whole scene (every t with |t s| up to the scene size, which holds M's chord)?
@@ -473,6 +490,33 @@ class MddQuery {
     setWitnesses(loc);
     return true;
   }
+
+  /// Witnesses at the point Y (frame of P) of the facet whose support sets the last facet
+  /// check left in setP / setQ: Y located in the hull of setP − setQ within the facet's
+  /// own plane (a basis orthogonal to its normal N), not by projection along s, so that
+  /// a facet met at a grazing angle is no sliver here. If Y lies off that hull (rounding
+  /// of the parameter), its nearest point.
+  void witnessesAt(const Vec3<T>& Y, const Vec3<T>& N) {
+    const ConvexPolyhedron<T>& P = F_.P();
+    auto basis = orthogonalBasis(N);
+    Vec3<T> a = basis.first, b = basis.second;
+    if constexpr (!ScalarTraits<T>::isExact) {
+      a.normalize();
+      b.normalize();
+    }
+    cache_.points2.clear();
+    for (std::size_t i = 0; i < cache_.setP.size(); ++i)
+      for (std::size_t j = 0; j < cache_.setQ.size(); ++j) {
+        const Vec3<T> y = P.vertex(cache_.setP[i]) - F_.q(cache_.setQ[j]) - Y;
+        cache_.points2.push_back({{y.dot(a), y.dot(b)}, static_cast<int>(i * cache_.setQ.size() + j)});
+      }
+    OriginLocation<T> loc;
+    const T anywhere = T(4) * (P.extent() + F_.Q().extent() + F_.t().template lpNorm<1>());
+    if (locateOrigin2(cache_.points2, cache_.hull2, loc, anywhere)) setWitnesses(loc);
+  }
+
+  /// The rounding slack of the facet checks (length; 0 for exact T).
+  const T& slack() const { return numTol_; }
 
   void setWitnesses(const OriginLocation<T>& loc) {
     const ConvexPolyhedron<T>& P = F_.P();
@@ -677,6 +721,16 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
       const Vec3<T> r = res.witnessP - res.witnessQ - param * s;
       if (cache.setQ.size() == 1 && cache.setP.size() > 1) res.witnessP -= r;
       if (cache.setP.size() == 1 && cache.setQ.size() > 1) res.witnessQ += r;
+      // Both sides spans (or a single pair) and the witnesses still off the motion: the
+      // line met the facet at a grazing angle, where locating its crossing along s is
+      // ill-conditioned (0.52 off on a face met at a sine of 1.5e-11). The contact point
+      // param * s is located in the facet's own plane instead.
+      const Vec3<T> r2 = res.witnessP - res.witnessQ - param * s;
+      if (res.faceType != MddFaceType::Grazing && r2.norm() > query.slack()) {
+        query.witnessesAt(Vec3<T>(param * sl), Vec3<T>(RPt * res.normal));
+        res.witnessP = toWorld(query.witnessP());
+        res.witnessQ = toWorld(query.witnessQ());
+      }
     }
     if (detail::absValue(res.translation) <= query.tolerance()) {
       res.status = MddStatus::Touching;
@@ -701,7 +755,7 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
       const T ns = m.N.dot(sl);
       if (ns == T(0) || (ns > T(0) ? hi.valid() : lo.valid())) continue;
       (m.type == MddFaceType::FV ? res.visitedFV : m.type == MddFaceType::VF ? res.visitedVF : res.visitedEE) += 1;
-      if (!query.faceHit(m)) continue;
+      if (!query.wellConditioned(m) || !query.faceHit(m)) continue;
       if (query.lineInPlane(m)) {
         lo = hi = detail::MFace<T>();  // a grazing line: the cold path decides
         break;

@@ -710,20 +710,26 @@ ConvexPolyhedron<T> ConvexPolyhedron<T>::fromMesh(const std::vector<Vec3<T>>& ve
 template <class T>
 int ConvexPolyhedron<T>::support(const Vec3<T>& d, int hint) const {
   int v = (hint >= 0 && hint < numVertices()) ? hint : 0;
-  T best = d.dot(vertices_[v]);
-  // Steepest ascent; values strictly increase, so no vertex repeats and it terminates.
-  for (;;) {
+  // Steepest ascent, each step judged by d . (w - v) rather than by comparing d . w with
+  // d . v: across an edge shorter than the rounding of the values (two hull vertices
+  // 2e-308 apart, both exact corners) the values are equal in floating point, and the
+  // climb stopped at a vertex whose only way up was that edge (0.13 where the maximum
+  // is 0.34). The difference of two close vertices is exact. Values strictly increase,
+  // so no vertex repeats (the step count guards against a rounding cycle).
+  for (int steps = 0; steps <= numVertices(); ++steps) {
     int next = -1;
+    T gain = T(0);
     for (int w : vertexNeighbors(v)) {
-      const T val = d.dot(vertices_[w]);
-      if (val > best) {
-        best = val;
+      const T g = d.dot(vertices_[w] - vertices_[v]);
+      if (g > gain) {
+        gain = g;
         next = w;
       }
     }
     if (next < 0) return v;
     v = next;
   }
+  return v;
 }
 
 template <class T>
