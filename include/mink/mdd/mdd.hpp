@@ -494,9 +494,9 @@ class MddQuery {
   /// Witnesses at the point Y (frame of P) of the facet whose support sets the last facet
   /// check left in setP / setQ: Y located in the hull of setP − setQ within the facet's
   /// own plane (a basis orthogonal to its normal N), not by projection along s, so that
-  /// a facet met at a grazing angle is no sliver here. If Y lies off that hull (rounding
-  /// of the parameter), its nearest point.
-  void witnessesAt(const Vec3<T>& Y, const Vec3<T>& N) {
+  /// a facet met at a grazing angle is no sliver here. False (witnesses unchanged) if Y
+  /// lies farther than the facet checks' slack from that hull.
+  bool witnessesAt(const Vec3<T>& Y, const Vec3<T>& N) {
     const ConvexPolyhedron<T>& P = F_.P();
     auto basis = orthogonalBasis(N);
     Vec3<T> a = basis.first, b = basis.second;
@@ -511,8 +511,9 @@ class MddQuery {
         cache_.points2.push_back({{y.dot(a), y.dot(b)}, static_cast<int>(i * cache_.setQ.size() + j)});
       }
     OriginLocation<T> loc;
-    const T anywhere = T(4) * (P.extent() + F_.Q().extent() + F_.t().template lpNorm<1>());
-    if (locateOrigin2(cache_.points2, cache_.hull2, loc, anywhere)) setWitnesses(loc);
+    if (!locateOrigin2(cache_.points2, cache_.hull2, loc, numTol_)) return false;
+    setWitnesses(loc);
+    return true;
   }
 
   /// The rounding slack of the facet checks (length; 0 for exact T).
@@ -726,8 +727,11 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
       // ill-conditioned (0.52 off on a face met at a sine of 1.5e-11). The contact point
       // param * s is located in the facet's own plane instead.
       const Vec3<T> r2 = res.witnessP - res.witnessQ - param * s;
-      if (res.faceType != MddFaceType::Grazing && r2.norm() > query.slack()) {
-        query.witnessesAt(Vec3<T>(param * sl), Vec3<T>(RPt * res.normal));
+      // Only if the contact point lies on that facet: where the parameter itself is off
+      // along a grazing line (1e-7 of a 1e26 scene), the crossing found along s, on the
+      // line and on the facet, is the better pair.
+      if (res.faceType != MddFaceType::Grazing && r2.norm() > query.slack() &&
+          query.witnessesAt(Vec3<T>(param * sl), Vec3<T>(RPt * res.normal))) {
         res.witnessP = toWorld(query.witnessP());
         res.witnessQ = toWorld(query.witnessQ());
       }
