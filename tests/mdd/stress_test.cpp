@@ -292,7 +292,15 @@ struct Placement {
   std::vector<V3<T>> ptsP, ptsQ;
   M3<T> rotP = M3<T>::Identity(), rotQ = M3<T>::Identity();
   V3<T> transP = V3<T>::Zero();
+  T hullTolerance = T(-1);  // HullOptions::tolerance of both shapes (negative: default)
 };
+
+template <class T>
+mink::HullOptions<T> hullOptions(const Placement<T>& su) {
+  mink::HullOptions<T> o;
+  o.tolerance = su.hullTolerance;
+  return o;
+}
 
 /// A built setup: the shapes and the exact reference of M0 = R_P P − R_Q Q.
 template <class T>
@@ -302,8 +310,8 @@ struct Built {
   MinkowskiDifferenceReference ref;
   explicit Built(const Placement<T>& su)
       : setup(su),
-        P(ConvexPolyhedron<T>::fromPoints(su.ptsP)),
-        Q(ConvexPolyhedron<T>::fromPoints(su.ptsQ)),
+        P(ConvexPolyhedron<T>::fromPoints(su.ptsP, hullOptions(su))),
+        Q(ConvexPolyhedron<T>::fromPoints(su.ptsQ, hullOptions(su))),
         ref(placedExact(su.ptsP, su.rotP), placedExact(su.ptsQ, su.rotQ)) {}
 };
 
@@ -935,8 +943,10 @@ TEST(MddStress, LinesInFacetPlanes) {
 TEST(MddStress, FuzzerScenes) {
   Family fam("fuzzer scenes (fuzz/regressions/)", kContactBound, "scene size");
   auto scene = [&](const std::string& label, const std::vector<Vec3d>& P, const std::vector<Vec3d>& Q,
-                   const Mat3d& RP, const Mat3d& RQ, const Vec3d& tP, const Vec3d& tQ, const Vec3d& s, double L) {
+                   const Mat3d& RP, const Mat3d& RQ, const Vec3d& tP, const Vec3d& tQ, const Vec3d& s, double L,
+                   double hullTolerance = -1.0) {
     Placement<double> su;
+    su.hullTolerance = hullTolerance;
     su.label = label;
     su.ptsP = P;
     su.ptsQ = Q;
@@ -1031,7 +1041,25 @@ TEST(MddStress, FuzzerScenes) {
                          Vec3d(-2, -2, -2), s, 4.0);
     EXPECT_LT((r.witnessP - r.witnessQ - r.parameter * s).norm(), 64 * kEpsD * 4.0);
   }
-  EXPECT_EQ(fam.queries, 5);
+  {
+    // search_answer_off_its_facet_huge_scene: Q of 1e28 (hull tolerance 0), P of size 2,
+    // a chord 5 long. A face met at a sine of 9e-10 won the search (the centre of duality
+    // within rounding of its plane) with a k / (N·s) of 1e21, 1e21 off M.
+    const std::vector<Vec3d> P = {{-1, -1, -1}, {2, -1, 1}, {-1, 1, -1}, {2, -2, -2},
+                                  {-1, 2, -1}, {-2, -1, 1}, {-1, -1, 1}};
+    const std::vector<Vec3d> Q = {{-0x1.f9f9f9f9f9f9fp-518, -0x1.f9f9f9f9f9f9fp-518, -0x1.f9f9f9f9f9f9fp-518},
+                                  {-0x1.89f9f9f9f9f9fp-517, 0x1.f9f9f9f9fa19fp-998, -0x1.f9f9f9f9f9f0fp-518},
+                                  {0x1.19f9f9f9f9f9fp-975, -0x1.5c5c5c5010101p+93, -0x1.5c5c5c5c5c5c5p+93},
+                                  {-0x1.5c5c5c5c5c5c5p+93, -0x1.5c5c5c505ffc5p+93, -0x1.5c5c5c5c5c5c5p+93},
+                                  {-0x1.5c5c5c505ffc5p+93, 0x0.000c5c5c5c5c5p-1022, 0}};
+    Mat3d RQ;
+    RQ << 0, 0, 1, 1, 0, 0, 0, 1, 6.9388939039072284e-18;
+    const Vec3d t(-5.3660187404602766e-11, -5.3660187404602766e-11, -5.3660187404602766e-11);
+    const auto r = scene("1e28 against 2, chord 5 long", P, Q, Mat3d::Identity(), RQ, Vec3d(-2, -2, -2), t, t,
+                         1.35e28, 0.0);
+    EXPECT_LT(std::abs(r.translation), 1e13) << name(r.status);  // the chord's ends: 5.2 and -2.5e9
+  }
+  EXPECT_EQ(fam.queries, 6);
   report({fam});
 }
 

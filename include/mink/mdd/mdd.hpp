@@ -197,7 +197,7 @@ class MddQuery {
     MFace<T> best = searchEE(F_, obj, start, cache_.marksEE, cache_.edgesP, cache_.edgesQ, budget,
                              res_.visitedEE);
     if (stopped() || budget.exhausted) return MFace<T>();
-    if (!(obj.num(best) > T(0)) || !facetHit(best)) {
+    if (!(obj.num(best) > T(0)) || !exitHit(best)) {
       res_.usedFallback = true;
       best = exhaustive(obj);
       if (stopped()) return MFace<T>();
@@ -283,7 +283,7 @@ class MddQuery {
     forEachFace([&](const MFace<T>& m) {
       if (obj.num(m) > T(0) && obj.better(m, best)) best = m;
     });
-    if (!best.valid() || facetHit(best)) return best;
+    if (!best.valid() || exitHit(best)) return best;
     // u_m − u_best ≤ slack(m) + slack(best), slack(x) = numTol_ |N_x| / (N_x·σ); times
     // both (positive) numerators.
     const T nb = obj.num(best), db = obj.den(best), lb = norm(best.N);
@@ -297,8 +297,20 @@ class MddQuery {
     });
     std::sort(ties.begin(), ties.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     for (const auto& tie : ties)
-      if (facetHit(tie.second)) return tie.second;
+      if (exitHit(tie.second)) return tie.second;
     return MFace<T>();
+  }
+
+  /// The acceptance of a search's answer: the line crosses the facet in m's plane
+  /// (facetHit), and, where it meets that plane at a grazing angle (below
+  /// defaults::kMddCertificateSine), the contact point k / (N·s) · s lies on that facet
+  /// too (located in the facet's own plane; the witnesses are then there). A centre of
+  /// duality within rounding of such a plane (a 1e28 scene whose chord is 5 long) made
+  /// it win the search with a k / (N·s) of 1e21, off M by as much.
+  bool exitHit(const MFace<T>& m) {
+    if (!facetHit(m)) return false;
+    if (wellConditioned(m)) return true;
+    return witnessesAt(Vec3<T>((m.k / m.N.dot(s_)) * s_), m.N);
   }
 
   /// Visits every FV, VF and EE face of M once, in a fixed order.
@@ -373,21 +385,22 @@ class MddQuery {
       // A plane holding the line to rounding bounds nothing along it (its k / (N·s) is
       // noise); the line is in its half-space.
       if (lineInPlane(m)) return;
+      // Each plane pushed out by the rounding slack: a plane the line meets at a grazing
+      // angle, whose k / (N·s) is rounding over a tiny N·s, then bounds nothing near M
+      // instead of cutting the chord at a point far off M; the others move by the slack
+      // over their sine. The chord's ends are then within the slack of M's boundary.
+      const T k = m.k + numTol_ * norm(m.N);
       if (ns == T(0)) {
-        if (m.k < -numTol_ * norm(m.N)) outside = true;
+        if (k < T(0)) outside = true;
         return;
       }
-      const T t = m.k / ns;
+      const T t = k / ns;
       if (ns > T(0) && (!hi.valid() || t < thi)) thi = t, hi = m;
       if (ns < T(0) && (!lo.valid() || t > tlo)) tlo = t, lo = m;
     });
     if (outside || !lo.valid() || !hi.valid()) return false;
-    if (tlo > thi) {
-      // Empty by rounding only (within the slack, as a length along s): a touch.
-      if ((tlo - thi) * norm(s_) > numTol_) return false;
-      tlo = thi = (tlo + thi) / T(2);
-    }
-    return true;
+    // Empty even with every plane pushed out by the slack: the line misses M.
+    return !(tlo > thi);
   }
 
   /// Witnesses on the facet of M in face m's plane nearest the line (chord()'s faces,
