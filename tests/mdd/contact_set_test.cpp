@@ -55,6 +55,32 @@ TEST(ContactSet, OriginOnAnEdgeWithACollinearHullPoint) {
   EXPECT_TRUE(convex);
 }
 
+// The fuzzer's case (fuzz/regressions/witness_negative_weights_collinear_fan): a facet
+// that is a span of two parallel faces, the origin on its boundary edge, which the 2-D
+// hull keeps as three collinear pieces. The fan triangle of the first three is
+// degenerate and does not hold the origin; its weights (-1, 2, 0) rebuilt the origin
+// exactly, from outside the triangle, and put mink's witness on Q 2 off Q.
+TEST(ContactSet, OriginOnAnEdgeSplitIntoCollinearHullPieces) {
+  const std::vector<P2> pts = {{{-2.8284271247461898, 1.6329931618554523}, 0},
+                               {{0, 1.6329931618554523}, 1},
+                               {{-2.1213203435596424, 2.0412414523193152}, 2},
+                               {{-1.4142135623730949, 0.81649658092772615}, 3},
+                               {{-1.4142135623730949, 2.4494897427831783}, 4},
+                               {{1.4142135623730949, 2.4494897427831783}, 5},
+                               {{-0.70710678118654746, 2.8577380332470415}, 6},
+                               {{0, 1.6329931618554523}, 7},
+                               {{-0.70710678118654746, 0.40824829046386307}, 8},
+                               {{2.1213203435596424, 0.40824829046386307}, 9},
+                               {{0, 0.81649658092772615}, 10},
+                               {{0.70710678118654746, -0.40824829046386307}, 11}};
+  std::vector<P2> work = pts, hull;
+  mink::detail::OriginLocation<double> loc;
+  ASSERT_TRUE(mink::detail::locateOrigin2(work, hull, loc, 1e-13));
+  bool convex = false;
+  EXPECT_LE(residual(pts, loc, convex), 1e-14);
+  EXPECT_TRUE(convex) << "weights " << loc.weight[0] << " " << loc.weight[1] << " " << loc.weight[2];
+}
+
 // Random convex polygons (points of a circle) with extra points in the middle of their
 // edges, and the origin placed on an edge, at a vertex or at the vertices' centroid; and
 // the same polygons with the origin outside by a clear margin. Scales 2^-20 .. 2^20.

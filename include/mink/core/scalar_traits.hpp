@@ -81,6 +81,23 @@ typename Derived::Scalar norm(const Eigen::MatrixBase<Derived>& v) {
   return v.norm();
 }
 
+/// Is d·(w − v) > 0 beyond its rounding (for exact T: exactly > 0)? For vertices whose
+/// values d·v and d·w tie in floating point across an edge shorter than their rounding:
+/// the difference of two close vertices is exact and its dot product accurate, while a
+/// real tie (d normal to the edge) leaves a difference of pure rounding, which is refused.
+template <class T>
+bool surelyUphill(const Eigen::Matrix<T, 3, 1>& d, const Eigen::Matrix<T, 3, 1>& v, const Eigen::Matrix<T, 3, 1>& w) {
+  const Eigen::Matrix<T, 3, 1> e = w - v;
+  const T g = d.dot(e);
+  if constexpr (ScalarTraits<T>::isExact) {
+    return g > T(0);
+  } else {
+    const T bound = T(4) * ScalarTraits<T>::epsilon() *
+                    (absValue(d[0] * e[0]) + absValue(d[1] * e[1]) + absValue(d[2] * e[2]));
+    return g > bound;
+  }
+}
+
 /// v scaled by a power of two (exact) so that its largest |component| is in [1, 2), for
 /// inexact scalars; v itself for exact scalars and for zero. The direction of a vector
 /// of 1e-232 (a portal edge between shapes 1e-236 wide) or of 1e172 (the normal of

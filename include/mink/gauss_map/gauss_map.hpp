@@ -102,19 +102,24 @@ class GaussMap {
   /// Does direction d (any non-zero vector, shape frame) lie in the closed region G(v),
   /// i.e. does v maximise d·x over the polyhedron?
   ///
-  /// Implemented as: d·x_v >= d·x_w for every neighbour w of v. Why this is the region:
+  /// Implemented as: d·x_w <= d·x_v for every neighbour w of v, a tie (equal in T) broken
+  /// by the sign of d·(x_w − x_v) where that is certain (an edge shorter than the rounding
+  /// of the values: detail::surelyUphill). Why this is the region:
   /// the edges at v span the tangent cone of the polytope at v, so the closed normal cone
   /// of v — which is G(v) — is { d : d·(x_w − x_v) <= 0 for all neighbours w }; the side
   /// of G(v) between corners i and i+1 lies on the great circle orthogonal to the edge
   /// (v, w_{i+1}). For exact T this is an exact sign test of a polynomial of the inputs.
-  /// Why this form rather than the corners (regionContainsByCorners): it compares the very
-  /// same per-vertex values d·x as ConvexPolyhedron::support and locate, so for inexact T
-  /// the three agree to the bit — locate(d) always lies in its own region, and a vertex
-  /// whose region holds d is one where the hill-climb stops.
+  /// Why this form rather than the corners (regionContainsByCorners): it makes the very
+  /// same comparisons as ConvexPolyhedron::support and locate, so for inexact T the three
+  /// agree to the bit — locate(d) always lies in its own region, and a vertex whose
+  /// region holds d is one where the hill-climb stops.
   bool regionContains(int v, const Vec3<T>& d) const {
-    const T here = d.dot(poly_->vertex(v));
-    for (int w : poly_->vertexNeighbors(v))
-      if (d.dot(poly_->vertex(w)) > here) return false;
+    const Vec3<T>& x = poly_->vertex(v);
+    const T here = d.dot(x);
+    for (int w : poly_->vertexNeighbors(v)) {
+      const T val = d.dot(poly_->vertex(w));
+      if (val > here || (val == here && detail::surelyUphill(d, x, poly_->vertex(w)))) return false;
+    }
     return true;
   }
 

@@ -900,6 +900,19 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
   if (query.lineInPlane(f2)) return fromGrazing(f2.N);
   const T t2 = f2.k / f2.N.dot(sl);
   res.status = MddStatus::Penetrating;
+  if constexpr (!ScalarTraits<T>::isExact) {
+    // The origin, inside M, within the rounding slack of the supporting plane of an exit
+    // face that the line meets at a grazing angle: it is that close to M's boundary, so P
+    // and Q touch to rounding. Said so (0), rather than through that face's k / (N·s),
+    // rounding over a tiny N·s (a 6e59 scene: 1.9e56 where the other exit was 2e-11).
+    // A face met at a larger angle gives an accurate k / (N·s) itself.
+    for (const detail::MFace<T>* f : {&f1, &f2}) {
+      if (query.wellConditioned(*f) || !(detail::absValue(f->k) <= query.slack() * f->N.norm())) continue;
+      if (!query.facetHit(*f)) query.faceHit(*f);  // its support sets and witnesses
+      record(*f);
+      return finish(T(0));
+    }
+  }
   // Tie: the exit along +s is reported.
   const bool takeSecond = detail::absValue(t2) < detail::absValue(t1) ||
                           (detail::absValue(t2) == detail::absValue(t1) && t2 > t1);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -71,10 +72,12 @@ bool triangleLocation(const std::pair<std::pair<T, T>, int>& pa, const std::pair
   if constexpr (!ScalarTraits<T>::isExact) {
     // Three points collinear up to rounding (the hull kept a point in the middle of an
     // edge, by a rounded orientation) or a sliver: A is (nearly) noise and so are the
-    // weights (seen: 0.25, 0.5, 0.25, naming a point 1.17 from the origin, where the
-    // points are of size 3). The check is the residual: if the weights do not rebuild
-    // the origin to rounding, the origin's projection on the longest side (which it lies
-    // within the triangle's width of) is taken when it is nearer.
+    // weights (seen: 0.25, 0.5, 0.25, naming a point 1.17 from the origin, and -1, 2, 0,
+    // rebuilding the origin but from outside the triangle). Weights that are clearly
+    // negative, or that do not rebuild the origin to rounding, are replaced by the
+    // weights clamped at zero, or by the origin's projection on the longest side,
+    // whichever rebuilds it best; if neither does (and the weights were clearly negative)
+    // the triangle does not hold the origin.
     auto at = [&](const OriginLocation<T>& l, const std::pair<T, T>* const* q) {
       T x = T(0), y = T(0);
       for (int i = 0; i < l.count; ++i) x += l.weight[i] * q[i]->first, y += l.weight[i] * q[i]->second;
@@ -83,11 +86,11 @@ bool triangleLocation(const std::pair<std::pair<T, T>, int>& pa, const std::pair
     const std::pair<T, T>* abc[3] = {&a, &b, &c};
     const T size = std::max({absValue(a.first), absValue(a.second), absValue(b.first), absValue(b.second),
                              absValue(c.first), absValue(c.second)});
-    T r = at(loc, abc);
-    if (!(r <= T(16) * ScalarTraits<T>::epsilon() * size)) {
-      // An origin on a side gets a tiny negative weight on the far corner (-3.6e-14 on a
-      // corner 4.6e5 away: a residual of 1.7e-8): the weights clamped at 0 and summed to
-      // one rebuild it from the side's ends.
+    const T R = T(16) * ScalarTraits<T>::epsilon() * size;
+    const T slackW = T(1) / T(1024);
+    const bool negative = loc.weight[0] < -slackW || loc.weight[1] < -slackW || loc.weight[2] < -slackW;
+    T r = negative ? std::numeric_limits<T>::infinity() : at(loc, abc);
+    if (!(r <= R)) {
       OriginLocation<T> clamped = loc;
       T sum = T(0);
       for (int i = 0; i < 3; ++i) sum += clamped.weight[i] = std::max(T(0), clamped.weight[i]);
@@ -97,7 +100,7 @@ bool triangleLocation(const std::pair<std::pair<T, T>, int>& pa, const std::pair
         if (rc < r) loc = clamped, r = rc;
       }
     }
-    if (!(r <= T(16) * ScalarTraits<T>::epsilon() * size)) {
+    if (!(r <= R)) {
       auto d2 = [](const std::pair<T, T>& p, const std::pair<T, T>& q) {
         const T dx = q.first - p.first, dy = q.second - p.second;
         return dx * dx + dy * dy;
@@ -118,9 +121,11 @@ bool triangleLocation(const std::pair<std::pair<T, T>, int>& pa, const std::pair
         seg.weight[0] = T(1) - l;
         seg.weight[1] = l;
         const std::pair<T, T>* pq[2] = {&p->first, &q->first};
-        if (at(seg, pq) < r) loc = seg;
+        const T rs = at(seg, pq);
+        if (rs < r) loc = seg, r = rs;
       }
     }
+    if (negative && !(r <= R)) return false;
   }
   return true;
 }

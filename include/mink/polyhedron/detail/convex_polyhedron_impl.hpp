@@ -710,24 +710,32 @@ ConvexPolyhedron<T> ConvexPolyhedron<T>::fromMesh(const std::vector<Vec3<T>>& ve
 template <class T>
 int ConvexPolyhedron<T>::support(const Vec3<T>& d, int hint) const {
   int v = (hint >= 0 && hint < numVertices()) ? hint : 0;
-  // Steepest ascent, each step judged by d . (w - v) rather than by comparing d . w with
-  // d . v: across an edge shorter than the rounding of the values (two hull vertices
-  // 2e-308 apart, both exact corners) the values are equal in floating point, and the
-  // climb stopped at a vertex whose only way up was that edge (0.13 where the maximum
-  // is 0.34). The difference of two close vertices is exact. Values strictly increase,
-  // so no vertex repeats (the step count guards against a rounding cycle).
+  T best = d.dot(vertices_[v]);
+  // Steepest ascent by the values d . x (a total order: no cycles, so it terminates, and
+  // GaussMap::regionContains mirrors these comparisons). A neighbour whose value equals
+  // the current one in floating point is still taken if d . (w - v) > 0: across an edge
+  // shorter than the rounding of the values (two hull corners 2e-308 apart) the values
+  // tie, and the climb stopped at the corner whose only way up was that edge (0.13 where
+  // the maximum is 0.34). The difference of two close vertices is exact, and the sign of
+  // d . (w - v) is used only where it exceeds its rounding (a real tie, d normal to a
+  // face, has a difference of pure rounding, and following it could cycle); the step
+  // count guards the rest.
   for (int steps = 0; steps <= numVertices(); ++steps) {
-    int next = -1;
-    T gain = T(0);
+    int next = -1, tied = -1;
+    T top = best;
     for (int w : vertexNeighbors(v)) {
-      const T g = d.dot(vertices_[w] - vertices_[v]);
-      if (g > gain) {
-        gain = g;
+      const T val = d.dot(vertices_[w]);
+      if (val > top) {
+        top = val;
         next = w;
+      } else if (next < 0 && tied < 0 && val == best && detail::surelyUphill(d, vertices_[v], vertices_[w])) {
+        tied = w;
       }
     }
+    if (next < 0) next = tied;
     if (next < 0) return v;
     v = next;
+    best = top;
   }
   return v;
 }
