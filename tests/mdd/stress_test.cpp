@@ -667,7 +667,7 @@ TEST(MddStress, NearDegenerate) {
   const unsigned seed = 5004;
   std::mt19937 rng(seed);
   std::vector<Family> rows = {{"degenerate: dihedral within 1e-12 of pi", kDomeBound, "1"},
-                              {"degenerate: sliver faces (width 1e-12)", kDegenerateBound, "1"},
+                              {"degenerate: sliver faces (width 1e-12, 1e-9)", kDegenerateBound, "1"},
                               {"degenerate: near-parallel edges (1e-12, 1e-9)", kDegenerateBound, "1"},
                               {"degenerate: 100k-vertex sphere vs tetrahedron", kDegenerateBound, "1"}};
   auto run = [&](int row, const std::string& label, const std::vector<Vec3d>& P, const std::vector<Vec3d>& Q,
@@ -1059,7 +1059,37 @@ TEST(MddStress, FuzzerScenes) {
                          1.35e28, 0.0);
     EXPECT_LT(std::abs(r.translation), 1e13) << name(r.status);  // the chord's ends: 5.2 and -2.5e9
   }
-  EXPECT_EQ(fam.queries, 6);
+  {
+    // sheet_q_ee_arcs_from_edges: Q a sheet 5e-11 thick (its edges' face normals 5e-11 from
+    // opposite), P a box-like wedge, s within 6e-11 of a face normal of P; the line leaves M
+    // 1.5e-10 from a vertex of M. The EE faces there were decided by arcs whose planes came
+    // from the cross product of Q's near-opposite normals (2e-6 rad off), so M lost the
+    // facet the line leaves by; the answer came from the chord fallback with witnesses 0.7
+    // off P. The translation was right; the witnesses must lie on P and on Q.
+    const std::vector<Vec3d> P = {{-1, -1, 2}, {-1, -1, 1}, {-1, 1, 1}, {-1, 2, 2}, {2, 2, 0}, {2, 1, 2}, {1, 2, 2}};
+    const double a = 0x1.ffffffffefp+0, b = 0x1.00000000008p+1, c = -0x1.ffffffffep-1, e = 0x1.ffffffffa4p+0;
+    const std::vector<Vec3d> Q = {{a, a, -1}, {a, a, a}, {a, a, b}, {c, c, c}, {e, e, e}, {e, 0x1.ffffffffedp+0, -0x1.68p-35}};
+    Mat3d R;
+    R << 0, 0, 1, 0, -1, 0, 1, 0, 0;
+    const Vec3d tP(1, 2, 2), tQ(1.9999999999572537, 1.9999999999572537, 1.9999999999572537);
+    const Vec3d s(0.99999999995725375, -4.2746250983327627e-11, -4.2746250983327627e-11);
+    const auto r = scene("sheet Q, s along a face normal of P", P, Q, R, R, tP, tQ, s, 4.0);
+    EXPECT_EQ(r.status, MddStatus::Penetrating);
+    // Distance of a world point outside the placed hull of pts (0 inside), by face planes.
+    auto outside = [](const std::vector<Vec3d>& pts, const Mat3d& rot, const Vec3d& t, const Vec3d& w) {
+      const auto X = ConvexPolyhedron<double>::fromPoints(pts);
+      const Vec3d x = rot.transpose() * (w - t);
+      double worst = 0;
+      for (int f = 0; f < X.numFaces(); ++f) {
+        const Vec3d n = X.faceNormal(f).normalized();
+        worst = std::max(worst, n.dot(x - X.vertex(X.faceVertices(f)[0])));
+      }
+      return worst;
+    };
+    EXPECT_LT(outside(P, R, tP, r.witnessP), 64 * kEpsD * 4.0);
+    EXPECT_LT(outside(Q, R, tQ, r.witnessQ), 64 * kEpsD * 4.0);
+  }
+  EXPECT_EQ(fam.queries, 7);
   report({fam});
 }
 

@@ -132,10 +132,35 @@ class PairFrame {
     const Vec3<T>& b = P_.faceNormal(fp.second);
     const Vec3<T> c = qNormal(fq.first);
     const Vec3<T> d = qNormal(fq.second);
-    const ArcVolumes<T> vol = arcVolumes(a, b, c, d).negatedSecondArc();
-    if (classifyArcs(vol) != ArcIntersection::Proper) return m;
     const auto vp = P_.edgeVertices(ep);
     const auto vq = Q_.edgeVertices(eq);
+    // The four volumes of arc_intersection.hpp: det[c b a] = c · (b × a) and
+    // det[a d c] = a · (d × c), the arcs' great-circle planes taken once each.
+    Vec3<T> nP = b.cross(a), nQ = d.cross(c);
+    if constexpr (!ScalarTraits<T>::isExact) {
+      // A sharp edge (a sheet 5e-11 thick: its two face normals 5e-11 from opposite) has
+      // a cross product of 5e-11 whose direction is off by 2 eps / 5e-11 = 4e-6 rad; the
+      // arc of Q's edge passed 1e-11 from a face normal of P, so the EE faces there were
+      // decided by noise and M lost the facet the line left by (witnesses 0.7 off P).
+      // The edge itself is the exact normal of that plane (its orientation from the cross
+      // product, whose length edgesResolved() keeps above 64 eps): used where the cross
+      // product is below 2^-10, so that the planes are off by at most 2^11 eps.
+      // The volumes' signs and the crossing's direction do not depend on the planes'
+      // lengths (the edge is scaled to unit order, as below).
+      const T sharp = T(1) / T(1048576);  // (2^-10)^2
+      if (nP.squaredNorm() < sharp) {
+        const Vec3<T> e = unitOrder(Vec3<T>(P_.vertex(vp.second) - P_.vertex(vp.first)));
+        const T side = e.dot(nP);
+        if (side != T(0)) nP = side > T(0) ? e : Vec3<T>(-e);
+      }
+      if (nQ.squaredNorm() < sharp) {
+        const Vec3<T> e = unitOrder(Vec3<T>(R_ * Vec3<T>(Q_.vertex(vq.second) - Q_.vertex(vq.first))));
+        const T side = e.dot(nQ);
+        if (side != T(0)) nQ = side > T(0) ? e : Vec3<T>(-e);
+      }
+    }
+    const ArcVolumes<T> vol = ArcVolumes<T>{c.dot(nP), d.dot(nP), a.dot(nQ), b.dot(nQ)}.negatedSecondArc();
+    if (classifyArcs(vol) != ArcIntersection::Proper) return m;
     const Vec3<T> p0 = P_.vertex(vp.first);
     const Vec3<T> q0 = q(vq.first);
     // Q's edge direction from its own coordinates, then rotated: q(b) − q(a) would lose
