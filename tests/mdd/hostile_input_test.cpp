@@ -285,6 +285,33 @@ TEST(MddHostile, SheetThinAsRoundingIsCrossed) {
   }
 }
 
+// The fallbacks that visit every face of M (exhaustive check, chord) are quadratic in the
+// shapes' sizes; above MddOptions::maxExhaustivePairs a query that needs them reports
+// IterationLimit rather than running for minutes (two 100k-vertex shapes: 9e10 pairs).
+// The sheet above needs the fallback; with the cap below its 9 x 9 edge pairs it stops.
+TEST(MddHostile, FallbackOverTooManyEdgePairsGivesIterationLimit) {
+  const std::vector<V> pts = {V(-0x1p+1, -0x1p+1, 0x0p+0), V(-0x1.fffffffffep+0, -0x1.ffffffffffp+0, 0x1p+0),
+                              V(-0x1.00000000008p+1, -0x1.ffffffffcp+0, -0x1.ffffffff81p+0),
+                              V(-0x1.ffffffffffp+0, 0x0p+0, 0x1p+0),
+                              V(-0x1.fffffffffep+0, -0x1.fffffffffdp+0, -0x1.fffffffffcp-1)};
+  const auto P = ConvexPolyhedron<double>::fromPoints(pts);
+  Pose<double> pp, pq;
+  pp.translation = V(-2, 0, -2);
+  pq.translation = V(-1, 1, -2);
+  const V s(1, 1, 0);
+  const auto r = mink::mdd(P, pp, P, pq, s);
+  ASSERT_TRUE(r.usedFallback);
+  EXPECT_EQ(r.status, MddStatus::Separated);
+  const long long pairs = static_cast<long long>(P.numEdges()) * P.numEdges();
+  mink::MddOptions<double> opt;
+  opt.maxExhaustivePairs = pairs;  // at the cap: allowed
+  EXPECT_EQ(mink::mdd(P, pp, P, pq, s, opt).status, MddStatus::Separated);
+  opt.maxExhaustivePairs = pairs - 1;
+  const auto c = mink::mdd(P, pp, P, pq, s, opt);
+  EXPECT_EQ(c.status, MddStatus::IterationLimit);
+  EXPECT_TRUE(c.usedFallback);
+}
+
 // Regression (fuzzer, fuzz/regressions/iteration_limit_grazing_centre_off_line): the line
 // of s grazes M (the fuzzer's slab clipping of the line against P ⊕ −Q over all
 // separating axes gives a chord of length ~1e-8 at translation -0.19959, parameter

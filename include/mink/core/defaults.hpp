@@ -52,9 +52,20 @@ constexpr double kMddTouchToleranceFactor = 256.0;
 /// MDD: the three phases of one search (one direction) evaluate at most this many times
 /// (faces(P) + faces(Q) + 64) candidate faces of M before reporting
 /// MddStatus::IterationLimit (the exhaustive check, when used, is bounded by its own
-/// faces(P) + faces(Q) + edges(P) * edges(Q)). Unit: multiple of the face counts.
+/// faces(P) + faces(Q) + edges(P) * edges(Q): see kMddExhaustivePairs). Unit: multiple of
+/// the face counts.
 /// Safe range: >= 2 (the FV and VF walks evaluate each face at most once).
 constexpr long long kMddVisitFactor = 4;
+
+/// MDD: the fallbacks for a search that cannot answer (the exhaustive check of every FV,
+/// VF and EE face of M, and the chord of M by clipping the line against all their planes)
+/// visit every edge pair of P and Q, which is quadratic in the sizes: they run only where
+/// edges(P) * edges(Q) is at most this many; above it such a query reports
+/// MddStatus::IterationLimit (and intersects() answers true). 2^24 pairs: two shapes of
+/// about 1400 vertices, or 100k vertices against a box (one pass over 15M pairs took
+/// 0.4 s on the project's machine; a fallback makes one to three).
+/// Unit: edge pairs. Safe range: >= 0 (0: never fall back).
+constexpr long long kMddExhaustivePairs = 1LL << 24;
 
 /// MDD: the 2-D portal refinement of the centre-of-duality step gives up after this many
 /// iterations times (vertices(P) + vertices(Q) + 16). Unit: multiple. Safe range: >= 1.

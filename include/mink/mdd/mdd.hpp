@@ -116,6 +116,8 @@ class MddQuery {
     }
     const long long faces = P.numFaces() + Q.numFaces() + 64;
     cap_ = opt.maxVisits >= 0 ? opt.maxVisits : defaults::kMddVisitFactor * faces;
+    const long long pairs = static_cast<long long>(P.numEdges()) * static_cast<long long>(Q.numEdges());
+    exhaustiveAllowed_ = pairs <= (opt.maxExhaustivePairs >= 0 ? opt.maxExhaustivePairs : defaults::kMddExhaustivePairs);
     const auto b = orthogonalBasis(s);
     u1_ = b.first;
     u2_ = b.second;
@@ -199,6 +201,7 @@ class MddQuery {
     if (stopped() || budget.exhausted) return MFace<T>();
     if (!(obj.num(best) > T(0)) || !exitHit(best)) {
       res_.usedFallback = true;
+      if (!exhaustiveAllowed_) return MFace<T>();  // too many edge pairs: IterationLimit
       best = exhaustive(obj);
       if (stopped()) return MFace<T>();
       if (!best.valid()) {
@@ -339,6 +342,10 @@ class MddQuery {
   /// True after a search whose every candidate failed the facet check, the exhaustive
   /// fallback's included (not after the visit cap).
   bool checkFailed() const { return checkFailed_; }
+
+  /// May the fallbacks that visit every face of M (exhaustive, chord) run? False when
+  /// edges(P) * edges(Q) exceeds MddOptions::maxExhaustivePairs.
+  bool exhaustiveAllowed() const { return exhaustiveAllowed_; }
 
   /// May face m be accepted on its certificate alone (faceHit, no search)? Inexact T:
   /// only if the line meets its plane at a sine of at least
@@ -648,6 +655,7 @@ class MddQuery {
   Vec3<T> wP_ = Vec3<T>::Zero(), wQ_ = Vec3<T>::Zero();
   std::vector<std::pair<T, MFace<T>>> tiesScratch_;
   bool checkFailed_ = false;
+  bool exhaustiveAllowed_ = true;
 };
 
 /// |s| for reporting. Exact T has no sqrt: exact when |s|^2 == 1, otherwise a Newton
@@ -818,10 +826,11 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
   // cap was hit (shapes far below the rounding of their distance, 100 apart 1e20 along
   // s, round M to a few points). The chord of M along the line, by clipping it against
   // every face plane, answers; it needs no centre of duality. A cap the caller set
-  // (options.maxVisits) is respected: IterationLimit.
+  // (options.maxVisits) is respected: IterationLimit; so is the cap on the edge pairs the
+  // chord visits (options.maxExhaustivePairs).
   auto fromChord = [&]() {
     if constexpr (!ScalarTraits<T>::isExact) {
-      if (query.checkFailed() || options.maxVisits < 0) {
+      if (query.exhaustiveAllowed() && (query.checkFailed() || options.maxVisits < 0)) {
         detail::MFace<T> lo, hi;
         T tlo = T(0), thi = T(0);
         if (!query.chord(tlo, thi, lo, hi)) return noContact();

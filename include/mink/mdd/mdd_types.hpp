@@ -18,7 +18,7 @@ enum class MddStatus {
   Touching,     ///< P and Q touch (0 on the boundary of M; within tolerance for inexact T)
   Penetrating,  ///< P and Q overlap; translation is the shorter way out along ±s
   NoContact,    ///< no motion of Q along s ever makes P and Q touch (line misses M)
-  IterationLimit  ///< a search hit its iteration cap (never seen in tests; a safety net)
+  IterationLimit  ///< a search hit its iteration cap, or needed a fallback over more edge pairs than MddOptions::maxExhaustivePairs
 };
 
 /// Type of the face of M that the line of s hits (MDD paper section II-C).
@@ -42,6 +42,11 @@ struct MddOptions {
   /// evaluates; negative: automatic, defaults::kMddVisitFactor * (faces(P) + faces(Q) +
   /// 64). Reaching it yields MddStatus::IterationLimit.
   long long maxVisits = -1;
+  /// Cap on edges(P) * edges(Q) for the fallbacks that visit every face of M (quadratic
+  /// in the sizes), used when a search cannot answer; negative: automatic,
+  /// defaults::kMddExhaustivePairs. Above it such a query reports
+  /// MddStatus::IterationLimit instead of running for seconds or minutes.
+  long long maxExhaustivePairs = -1;
   /// Use Dobkin–Kirkpatrick hierarchies for cold support queries on large shapes.
   bool useHierarchy = true;
 };
