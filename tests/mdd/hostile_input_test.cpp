@@ -255,6 +255,21 @@ TEST(MddHostile, RotatedTetrahedraDoNotHitTheIterationCap) {
   }
 }
 
+// The scene of fuzz/regressions/iteration_limit_sliver_chord (see below).
+struct SheetScene {
+  ConvexPolyhedron<double> P = ConvexPolyhedron<double>::fromPoints(
+      {V(-0x1p+1, -0x1p+1, 0x0p+0), V(-0x1.fffffffffep+0, -0x1.ffffffffffp+0, 0x1p+0),
+       V(-0x1.00000000008p+1, -0x1.ffffffffcp+0, -0x1.ffffffff81p+0), V(-0x1.ffffffffffp+0, 0x0p+0, 0x1p+0),
+       V(-0x1.fffffffffep+0, -0x1.fffffffffdp+0, -0x1.fffffffffcp-1)});
+  Pose<double> pp = translated(V(-2, 0, -2)), pq = translated(V(-1, 1, -2));
+  V s = V(1, 1, 0);
+  static Pose<double> translated(const V& t) {
+    Pose<double> p;
+    p.translation = t;
+    return p;
+  }
+};
+
 // Regression (fuzzer, fuzz/regressions/iteration_limit_sliver_chord; _integer_boxes is the
 // same bug with 39 near-integer points and is replayed by the fuzz run): P is five points
 // within 1e-12 of the plane x = -2, so M = P ⊕ −P (+ the offset of the poses) is a sheet
@@ -264,15 +279,11 @@ TEST(MddHostile, RotatedTetrahedraDoNotHitTheIterationCap) {
 // crosses, its facet check failed, and mdd() answered IterationLimit after the
 // exhaustive fallback. The fallback now tries every face tied within rounding.
 TEST(MddHostile, SheetThinAsRoundingIsCrossed) {
-  const std::vector<V> pts = {V(-0x1p+1, -0x1p+1, 0x0p+0), V(-0x1.fffffffffep+0, -0x1.ffffffffffp+0, 0x1p+0),
-                              V(-0x1.00000000008p+1, -0x1.ffffffffcp+0, -0x1.ffffffff81p+0),
-                              V(-0x1.ffffffffffp+0, 0x0p+0, 0x1p+0),
-                              V(-0x1.fffffffffep+0, -0x1.fffffffffdp+0, -0x1.fffffffffcp-1)};
-  const auto P = ConvexPolyhedron<double>::fromPoints(pts);
-  Pose<double> pp, pq;
-  pp.translation = V(-2, 0, -2);
-  pq.translation = V(-1, 1, -2);
-  const V s(1, 1, 0);
+  const SheetScene sc;
+  const auto& P = sc.P;
+  const auto& pp = sc.pp;
+  const auto& pq = sc.pq;
+  const V& s = sc.s;
   mink::MddCache<double> cache;
   for (int reps = 0; reps < 2; ++reps) {  // cold, then warm from the cache
     const auto r = mink::mdd(P, pp, P, pq, s, cache);
@@ -290,15 +301,11 @@ TEST(MddHostile, SheetThinAsRoundingIsCrossed) {
 // IterationLimit rather than running for minutes (two 100k-vertex shapes: 9e10 pairs).
 // The sheet above needs the fallback; with the cap below its 9 x 9 edge pairs it stops.
 TEST(MddHostile, FallbackOverTooManyEdgePairsGivesIterationLimit) {
-  const std::vector<V> pts = {V(-0x1p+1, -0x1p+1, 0x0p+0), V(-0x1.fffffffffep+0, -0x1.ffffffffffp+0, 0x1p+0),
-                              V(-0x1.00000000008p+1, -0x1.ffffffffcp+0, -0x1.ffffffff81p+0),
-                              V(-0x1.ffffffffffp+0, 0x0p+0, 0x1p+0),
-                              V(-0x1.fffffffffep+0, -0x1.fffffffffdp+0, -0x1.fffffffffcp-1)};
-  const auto P = ConvexPolyhedron<double>::fromPoints(pts);
-  Pose<double> pp, pq;
-  pp.translation = V(-2, 0, -2);
-  pq.translation = V(-1, 1, -2);
-  const V s(1, 1, 0);
+  const SheetScene sc;
+  const auto& P = sc.P;
+  const auto& pp = sc.pp;
+  const auto& pq = sc.pq;
+  const V& s = sc.s;
   const auto r = mink::mdd(P, pp, P, pq, s);
   ASSERT_TRUE(r.usedFallback);
   EXPECT_EQ(r.status, MddStatus::Separated);
