@@ -255,6 +255,41 @@ TEST(MddHostile, RotatedTetrahedraDoNotHitTheIterationCap) {
   }
 }
 
+// Regression (fuzzer, fuzz/regressions/intersects_flat_edge_arc_antipode, reduced): shapes
+// of 5e25 whose other corners sit within 1e-79 of one point, both placed at (-2, -2, -2),
+// hull tolerance 0; they overlap by 2e25. Q has an edge whose two face normals are 1e-16
+// apart, in the plane of the arc of an edge of P: the arc test's signs were rounding,
+// declared an EE face whose arcs are 180 degrees apart, its plane through the origin
+// (k = -9e-236), and intersects() answered false. Now the crossing must be the same
+// point on both arcs, and "apart" is certified by support queries along the normal.
+TEST(MddHostile, IntersectsOfHugeShapesMeetingAtATinyCluster) {
+  mink::HullOptions<double> exact;
+  exact.tolerance = 0;
+  const auto P = ConvexPolyhedron<double>::fromPoints(
+      {V(-0x1.f0f0f0f0f0f0fp+17, 0x1.f0f0f0f0f0f0fp-783, 0x1.f0f0f0f0f0f0fp-783),
+       V(0x1.f0f0f0f0f0f0fp-783, 0x1.f0f0f0f0f0f0fp-1007, 0x1.1010301030301p-1007),
+       V(0x1.5454545454545p+85, 0x1.5454545450545p+85, 0x1.5454545454545p+85),
+       V(0x1.5454545454545p+85, 0x1.5454545454545p+85, 0x1.5454545454545p+85),
+       V(0x1.7373737374545p-140, 0x1.7373737373737p-140, 0x1.5454545454537p+85)},
+      exact);
+  const auto Q = ConvexPolyhedron<double>::fromPoints(
+      {V(0x1p-79, 0x1.2012af8ffp-991, 0x1.f0f0102040201p-783),
+       V(0x1.e151515151515p-685, 0x1.5151515151515p-782, 0x0.10f0f0f0f0f0fp-1022),
+       V(0x1.f0f070f0f0f0fp+81, 0x1.5454545454545p+85, 0x1.5450000000e45p+85),
+       V(0x1.5454545454545p+85, -0x1.ababafabe4545p-84, 0x1.545454545babap+85),
+       V(0x1.5454545454545p+85, 0x1.5454545454545p+85, 0x1.5454545454545p+85),
+       V(0x1.030008c275045p-1017, 0x1.f0f0f454545p-783, 0x1.f0f0f0f0f0f0fp-783)},
+      exact);
+  Pose<double> pose;
+  pose.translation = V(-2, -2, -2);
+  EXPECT_TRUE(mink::intersects(P, pose, Q, pose));
+  mink::MddCache<double> cache;
+  EXPECT_TRUE(mink::intersects(P, pose, Q, pose, cache));
+  const auto r = mink::mdd(P, pose, Q, pose, V(55, 55, 55));
+  EXPECT_EQ(r.status, MddStatus::Penetrating);
+  EXPECT_LT(r.translation, -1e24);
+}
+
 // The scene of fuzz/regressions/iteration_limit_sliver_chord (see below).
 struct SheetScene {
   ConvexPolyhedron<double> P = ConvexPolyhedron<double>::fromPoints(

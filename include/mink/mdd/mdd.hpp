@@ -138,14 +138,16 @@ class MddQuery {
   /// that passes the facet check is the answer (a supporting plane of M whose facet the
   /// line crosses is where the ray leaves M: no search can do better). Otherwise the
   /// paper's three searches run from those faces.
-  MFace<T> exitFace(const Vec3<T>& sigma, const Vec3<T>& c, bool earlyExit = false, bool* separated = nullptr) {
+  MFace<T> exitFace(const Vec3<T>& sigma, const Vec3<T>& c, bool earlyExit = false, bool* separated = nullptr,
+                    MFace<T>* separator = nullptr) {
     const ConvexPolyhedron<T>& P = F_.P();
     const ConvexPolyhedron<T>& Q = F_.Q();
-    RayObjective<T> obj{sigma, c};
+    RayObjective<T> obj{sigma, c, false, false, MFace<T>()};
     obj.earlyExit = earlyExit;
     auto stopped = [&]() {
       if (!obj.separated) return false;
       if (separated) *separated = true;
+      if (separator) *separator = obj.separator;
       return true;
     };
     SearchBudget budget{cap_, false};
@@ -1001,8 +1003,24 @@ bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Convex
   MddOptions<T> options;
   detail::MddQuery<T> query(F, x0, cache, options, res);
   bool separated = false;
-  const detail::MFace<T> f = query.exitFace(Vec3<T>(-x0), x0, true, &separated);
-  if (separated) return false;
+  detail::MFace<T> separator;
+  detail::MFace<T> f = query.exitFace(Vec3<T>(-x0), x0, true, &separated, &separator);
+  if (separated) {
+    if constexpr (ScalarTraits<T>::isExact) {
+      return false;
+    } else {
+      // "Apart" is certified by the separating-axis test along the stopping face's normal
+      // N: the support of M along N, from support queries (not from the face's own k,
+      // which is only as good as the face: an EE face declared by rounding had a plane
+      // through the origin and k = -9e-236, for shapes overlapping by 2e25), must be
+      // below -tolerance. Otherwise the search is run to its end.
+      const Vec3<T> N = separator.N;
+      const int vp = F.supportP(N, cache.vertexP), vq = F.supportMinusQ(N, cache.vertexQ);
+      const T h = N.dot(P.vertex(vp) - F.q(vq));
+      if (h < -query.tolerance() * N.norm()) return false;
+      f = query.exitFace(Vec3<T>(-x0), x0);
+    }
+  }
   if (!f.valid()) return true;
   // Exit parameter along x0 (x0 itself is at 1): the origin is in M iff it is <= 0.
   const T param = f.k / f.N.dot(x0);

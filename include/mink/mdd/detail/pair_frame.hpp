@@ -161,6 +161,19 @@ class PairFrame {
     }
     const ArcVolumes<T> vol = ArcVolumes<T>{c.dot(nP), d.dot(nP), a.dot(nQ), b.dot(nQ)}.negatedSecondArc();
     if (classifyArcs(vol) != ArcIntersection::Proper) return m;
+    // The crossing direction is a positive combination of a and b (arc_intersection.hpp).
+    const Vec3<T> dir = arcIntersectionDirection(a, b, vol);
+    if constexpr (!ScalarTraits<T>::isExact) {
+      // The same crossing seen on the arc of −Q, −(|dba| c + |cba| d), must be that point
+      // and not its antipode. The sign test of arc_intersection.hpp decides this from the
+      // signs alone, which rounding sets when the four normals are nearly on one great
+      // circle (a flat edge of Q, its normals 1e-16 apart, in the plane of P's arc): an
+      // EE face was then declared whose arcs are 180 degrees apart, with a plane through
+      // the origin, and intersects() said false for shapes overlapping by 2e25. Both
+      // points are accurate in direction even there.
+      const Vec3<T> onQ = -(absValue(vol.dba) * c + absValue(vol.cba) * d);
+      if (!(onQ.dot(dir) > T(0))) return m;
+    }
     const Vec3<T> p0 = P_.vertex(vp.first);
     const Vec3<T> q0 = q(vq.first);
     // Q's edge direction from its own coordinates, then rotated: q(b) − q(a) would lose
@@ -188,8 +201,6 @@ class PairFrame {
       const T floor = T(defaults::kMddParallelEdgeFactor) * ScalarTraits<T>::epsilon();
       if (N.squaredNorm() <= floor * floor * dp.squaredNorm() * dq.squaredNorm()) return m;
     }
-    // The crossing direction is a positive combination of a and b (arc_intersection.hpp).
-    const Vec3<T> dir = arcIntersectionDirection(a, b, vol);
     const T orient = N.dot(dir);
     if (orient == T(0)) return m;
     if (orient < T(0)) N = -N;
@@ -219,10 +230,11 @@ struct RayObjective {
   Vec3<T> c;
   bool earlyExit = false;
   mutable bool separated = false;
+  mutable MFace<T> separator;  ///< the face that set `separated`
   T num(const MFace<T>& f) const { return f.N.dot(sigma); }
   T den(const MFace<T>& f) const { return f.k - f.N.dot(c); }
   bool better(const MFace<T>& f, const MFace<T>& g) const {
-    if (earlyExit && f.valid() && f.k < T(0)) separated = true;
+    if (earlyExit && !separated && f.valid() && f.k < T(0)) separated = true, separator = f;
     if (!g.valid()) return f.valid();
     if (!f.valid()) return false;
     return num(f) * den(g) > num(g) * den(f);
