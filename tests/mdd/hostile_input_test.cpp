@@ -290,6 +290,33 @@ TEST(MddHostile, IntersectsOfHugeShapesMeetingAtATinyCluster) {
   EXPECT_LT(r.translation, -1e24);
 }
 
+// Regression (fuzzer, fuzz/regressions/sheets_near_parallel_edges_spurious_face): P = Q, a
+// tetrahedron 1e-10 thick (a sheet), placed so that moving Q by -s puts it exactly on P.
+// An EE face of two near-parallel rim edges was declared by rounding; its plane is no
+// supporting plane of M but the facet check's support sets (every vertex above the face's
+// own) held the line, and mdd() said Separated at parameter -1.000456 (1.04 off M, the
+// witnesses 0.2 off parameter * s). Faces whose own vertices do not support their
+// normal are now refused by the facet check and by the chord of M.
+TEST(MddHostile, CoincidingSheetsAreMetWhereTheyCoincide) {
+  const std::vector<V> pts = {V(-0x1.ffffffff4p-1, -0x1p+0, -0x1.000000003c8p+1),
+                              V(-0x1.ffffffffffp+0, 0x1.0000000017p+0, 0x1.000000000dp+0),
+                              V(-0x1.00000000008p+1, -0x1.00000000008p+1, -0x1.00000000008p+1),
+                              V(-0x1.fffffffff8p-1, 0x1.fffffffffbp+0, 0x1.0000000001p+0)};
+  mink::HullOptions<double> exact;
+  exact.tolerance = 0;
+  const auto P = ConvexPolyhedron<double>::fromPoints(pts, exact);
+  const auto Q = ConvexPolyhedron<double>::fromPoints(pts);
+  Pose<double> pp, pq;
+  pp.translation = V(12, 2048, 1024);
+  pq.translation = V(-2, -2, -2);
+  const V s(-14, -2050, -1026);
+  const auto r = mink::mdd(P, pp, Q, pq, s);
+  ASSERT_EQ(r.status, MddStatus::Separated);
+  EXPECT_NEAR(r.parameter, -1.0, 1e-12);
+  EXPECT_LT((r.witnessP - r.witnessQ - r.parameter * s).norm(), 1e-10);
+  EXPECT_FALSE(mink::intersects(P, pp, Q, pq));
+}
+
 // The scene of fuzz/regressions/iteration_limit_sliver_chord (see below).
 struct SheetScene {
   ConvexPolyhedron<double> P = ConvexPolyhedron<double>::fromPoints(

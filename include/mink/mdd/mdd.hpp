@@ -394,6 +394,8 @@ class MddQuery {
       // A plane holding the line to rounding bounds nothing along it (its k / (N·s) is
       // noise); the line is in its half-space.
       if (lineInPlane(m)) return;
+      // Only planes that support M (a face declared by rounding cuts M).
+      if (!facetSets(m)) return;
       // Each plane pushed out by the rounding slack: a plane the line meets at a grazing
       // angle, whose k / (N·s) is rounding over a tiny N·s, then bounds nothing near M
       // instead of cutting the chord at a point far off M; the others move by the slack
@@ -470,7 +472,15 @@ class MddQuery {
 
   /// Does the line {t s} cross the facet of M in face m's plane? Fills the witnesses
   /// (frame of P) when it does.
-  bool facetHit(const MFace<T>& m) {
+  bool facetHit(const MFace<T>& m) { return facetSets(m) && hitSets(numTol_); }
+
+  /// The support sets of face m's normal N in P and in −Q (setP, setQ), from m's own
+  /// vertices; false if those do not support N to within the rounding slack. A face of M
+  /// declared by rounding (an EE pair of near-parallel edges of two sheets 1e-10 thick)
+  /// is no supporting plane: its support sets were every vertex above its own, whose
+  /// differences hold the line wherever it crosses M, and its plane, 1.04 off M, was
+  /// accepted (and cut the chord of M to nothing).
+  bool facetSets(const MFace<T>& m) {
     const ConvexPolyhedron<T>& P = F_.P();
     const ConvexPolyhedron<T>& Q = F_.Q();
     int vp = 0, vq = 0;
@@ -493,9 +503,9 @@ class MddQuery {
     const Vec3<T>& N = m.N;
     T eps = T(0);
     if constexpr (!ScalarTraits<T>::isExact) eps = numTol_ * N.norm();
-    supportSet(P, vp, [&](int v) { return T(N.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
-    supportSet(Q, vq, [&](int v) { return T(-N.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
-    return hitSets(numTol_);
+    const bool okP = supportSet(P, vp, [&](int v) { return T(N.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
+    const bool okQ = supportSet(Q, vq, [&](int v) { return T(-N.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
+    return okP && okQ;
   }
 
   /// Does the line cross (within `slack`) the hull of setP − setQ? Fills the witnesses.

@@ -17,18 +17,29 @@ namespace detail {
 
 /// Vertices of X whose `value` is within `eps` of value(v0), v0 a maximiser: the face,
 /// edge or vertex of X supporting the direction (exactly for exact T, eps = 0).
-/// Breadth-first over the vertex graph: the support set is connected.
+/// Breadth-first over the vertex graph: the support set is connected. Returns false if
+/// v0 is not a maximiser to within eps (a vertex reached has a value above value(v0) +
+/// eps): then the set is every vertex above value(v0) − eps that the walk reached, no
+/// support set (a face of M whose edge vertices do not support its normal is no face).
 template <class T, class Value>
-void supportSet(const ConvexPolyhedron<T>& X, int v0, const Value& value, const T& eps, EpochMarks& marks,
+bool supportSet(const ConvexPolyhedron<T>& X, int v0, const Value& value, const T& eps, EpochMarks& marks,
                 std::vector<int>& out) {
   out.clear();
   marks.reset(static_cast<std::size_t>(X.numVertices()));
   marks.mark(v0);
   out.push_back(v0);
-  const T floor = value(v0) - eps;
+  const T top = value(v0);
+  const T floor = top - eps, ceiling = top + eps;
+  bool maximiser = true;
   for (std::size_t i = 0; i < out.size(); ++i)
-    for (int w : X.vertexNeighbors(out[i]))
-      if (marks.mark(w) && !(value(w) < floor)) out.push_back(w);
+    for (int w : X.vertexNeighbors(out[i])) {
+      if (!marks.mark(w)) continue;
+      const T x = value(w);
+      if (x < floor) continue;
+      if (x > ceiling) maximiser = false;
+      out.push_back(w);
+    }
+  return maximiser;
 }
 
 /// 2-D orientation sign of (a, b, c).
