@@ -222,6 +222,20 @@ TEST(MddHostile, DirectionScaleDoesNotChangeTheAnswer) {
   }
 }
 
+// A huge s against tiny shapes (fuzzer: |s| = 5e302, shapes of 2e-131): parameter =
+// translation / |s| is below the double range and comes out 0 (documented in
+// MddResult::parameter), while translation and the witnesses stay accurate.
+TEST(MddHostile, HugeDirectionAgainstTinyShapesKeepsTheTranslation) {
+  const auto B = box(1e-131);
+  Pose<double> q;
+  q.translation = V(3e-131, 0, 0);
+  const auto r = mink::mdd(B, Pose<double>(), B, q, V(-5e302, 0, 0));
+  ASSERT_EQ(r.status, MddStatus::Separated);
+  EXPECT_NEAR(r.translation, 1e-131, 1e-143);
+  EXPECT_EQ(r.parameter, 0.0);
+  EXPECT_NEAR((r.witnessP - r.witnessQ).x(), -1e-131, 1e-143);
+}
+
 // Regression (fuzzer, fuzz/regressions/iteration_limit_after_fallback_{1,2}): valid inputs with
 // the default caps end in IterationLimit (usedFallback is set: the facet check failed and
 // the exhaustive fallback did not answer). Tetrahedra with integer vertices; P rotated by

@@ -64,7 +64,10 @@ struct MddResult {
   T translation = T(0);
   /// The same motion as a multiple of s as given: moving Q by parameter * s. Exact for
   /// exact T (a ratio of polynomials in the inputs). For inexact T it is ±infinity when
-  /// |translation| / |s| exceeds the type's range (a tiny s, e.g. |s| = 1e-300).
+  /// |translation| / |s| exceeds the type's range (a tiny s, e.g. |s| = 1e-300), and 0 or
+  /// a denormal (its precision lost) when |translation| / |s| is below the type's normal
+  /// range (a huge s against tiny shapes, e.g. |s| = 5e302 and a translation of 1e-132);
+  /// `translation` and the witnesses stay accurate.
   T parameter = T(0);
   /// Outward normal of the face of M hit by the line (world frame), unit for inexact T;
   /// for exact T unnormalised (exact direction).
