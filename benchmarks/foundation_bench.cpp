@@ -30,6 +30,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_common.hpp"
 #include "mink/core/defaults.hpp"
 #include "mink/hierarchy/dk_hierarchy.hpp"
 #include "mink/polyhedron/convex_polyhedron.hpp"
@@ -41,6 +42,9 @@ using mink::DKHierarchy;
 using mink::DKHierarchyOptions;
 using Vec = mink::Vec3<double>;
 using Clock = std::chrono::steady_clock;
+using mink_bench::cpuModel;
+using mink_bench::loadAverage;
+using mink_bench::quantile;
 
 volatile long long gSink = 0;  // keeps query results alive
 
@@ -48,14 +52,6 @@ struct Stats {
   double median = 0, min = 0, max = 0, q1 = 0, q3 = 0;
   int reps = 0;
 };
-
-double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  const double pos = q * (v.size() - 1);
-  const std::size_t i = static_cast<std::size_t>(pos);
-  const double f = pos - i;
-  return i + 1 < v.size() ? v[i] * (1 - f) + v[i + 1] * f : v[i];
-}
 
 Stats summarize(const std::vector<double>& v) {
   Stats s;
@@ -134,25 +130,6 @@ std::vector<Vec> slowDirections(int count, double step, unsigned seed) {
     v = cur;
   }
   return d;
-}
-
-std::string cpuModel() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const auto c = line.find(':');
-      if (c != std::string::npos) return line.substr(c + 2);
-    }
-  }
-  return "unknown";
-}
-
-std::string loadAverage() {
-  std::ifstream in("/proc/loadavg");
-  std::string a, b, c;
-  in >> a >> b >> c;
-  return a + " " + b + " " + c;
 }
 
 struct Csv {

@@ -52,6 +52,7 @@
 #include <vector>
 
 #include "mink/mink.hpp"
+#include "bench_common.hpp"
 #include "peers.hpp"
 #include "support/exact_placement.hpp"
 #include "support/gjk_reference.hpp"
@@ -67,6 +68,9 @@ using mink_bench::Mat3d;
 using mink_bench::Vec3d;
 using mink_test::Rational;
 using Clock = std::chrono::steady_clock;
+using mink_bench::loadAverage;
+using mink_bench::machineLine;
+using mink_bench::quantile;
 
 volatile double gSink = 0;
 
@@ -76,15 +80,6 @@ double microsSince(Clock::time_point t0) {
 
 // ---------------------------------------------------------------------------------------
 // Small statistics and output helpers.
-
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const double pos = q * (v.size() - 1);
-  const std::size_t i = static_cast<std::size_t>(pos);
-  const double f = pos - i;
-  return i + 1 < v.size() ? v[i] * (1 - f) + v[i + 1] * f : v[i];
-}
 
 struct Summary {
   std::size_t n = 0;
@@ -103,31 +98,6 @@ Summary summarize(const std::vector<double>& v) {
   s.mean = sum / v.size();
   s.max = *std::max_element(v.begin(), v.end());
   return s;
-}
-
-std::string cpuModel() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const auto c = line.find(':');
-      if (c != std::string::npos) return line.substr(c + 2);
-    }
-  }
-  return "unknown";
-}
-
-std::string loadAverage() {
-  std::ifstream in("/proc/loadavg");
-  std::string a, b, c;
-  in >> a >> b >> c;
-  return a + " " + b + " " + c;
-}
-
-std::string machineLine() {
-  std::ostringstream o;
-  o << cpuModel() << ", " << std::thread::hardware_concurrency() << " hardware threads";
-  return o.str();
 }
 
 /// One CSV per section, all with the same columns; '#' lines carry the machine and setup.
