@@ -15,22 +15,13 @@
 #include <string>
 #include <vector>
 
+#include "support/expect_rejected.hpp"
+
 namespace {
 
 using V = mink::Vec3<double>;
 
-template <class Fn>
-void expectRejected(Fn&& fn, const std::string& words, const std::string& context) {
-  SCOPED_TRACE(context);
-  try {
-    fn();
-    ADD_FAILURE() << "accepted, expected InvalidInput containing: " << words;
-  } catch (const mink::InvalidInput& e) {
-    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what() << "; expected: " << words;
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "threw something other than InvalidInput: " << e.what();
-  }
-}
+using mink_test::expectRejected;
 
 TEST(IoHostile, OffRejectsNonFiniteAndOverflowingCoordinates) {
   const char* tokens[] = {"nan", "NaN", "inf", "-inf", "1e999", "-1e400"};

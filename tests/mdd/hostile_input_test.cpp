@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "support/expect_rejected.hpp"
+
 namespace {
 
 using mink::ConvexPolyhedron;
@@ -33,18 +35,7 @@ ConvexPolyhedron<double> box(double a) {
   return ConvexPolyhedron<double>::fromPoints(p);
 }
 
-template <class Fn>
-void expectRejected(Fn&& fn, const std::string& words, const std::string& context) {
-  SCOPED_TRACE(context);
-  try {
-    fn();
-    ADD_FAILURE() << "accepted, expected InvalidInput containing: " << words;
-  } catch (const mink::InvalidInput& e) {
-    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what() << "; expected: " << words;
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "threw something other than InvalidInput: " << e.what();
-  }
-}
+using mink_test::expectRejected;
 
 struct BadPose {
   const char* name;

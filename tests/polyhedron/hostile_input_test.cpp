@@ -11,25 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "support/expect_rejected.hpp"
+
 namespace {
 
 using mink::ConvexPolyhedron;
 using V = mink::Vec3<double>;
 
-// Runs fn, which must throw mink::InvalidInput whose what() contains every needle.
-template <class Fn>
-void expectRejected(Fn&& fn, std::initializer_list<const char*> needles, const std::string& context) {
-  SCOPED_TRACE(context);
-  try {
-    fn();
-    ADD_FAILURE() << "accepted, expected InvalidInput";
-  } catch (const mink::InvalidInput& e) {
-    const std::string msg = e.what();
-    for (const char* n : needles) EXPECT_NE(msg.find(n), std::string::npos) << "message: " << msg << "; expected: " << n;
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "threw something other than InvalidInput: " << e.what();
-  }
-}
+using mink_test::expectRejected;
 
 std::vector<V> box(double a) {
   std::vector<V> p;
