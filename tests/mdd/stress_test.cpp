@@ -957,6 +957,17 @@ TEST(MddStress, FuzzerScenes) {
     const auto r = runQueries(fam, b, {{tQ, s, label}}, L);
     return r.empty() ? mink::MddResult<double>() : r[0];
   };
+  // Distance of a world point outside the placed hull of pts (0 inside), by face planes.
+  auto outside = [](const std::vector<Vec3d>& pts, const Mat3d& rot, const Vec3d& t, const Vec3d& w) {
+    const auto X = ConvexPolyhedron<double>::fromPoints(pts);
+    const Vec3d x = rot.transpose() * (w - t);
+    double worst = 0;
+    for (int f = 0; f < X.numFaces(); ++f) {
+      const Vec3d n = X.faceNormal(f).normalized();
+      worst = std::max(worst, n.dot(x - X.vertex(X.faceVertices(f)[0])));
+    }
+    return worst;
+  };
   {
     // grazing_huge_nonorthonormal_q: Q up to 2e52, its rotation 1.2e-7 off orthonormal, P of
     // size 29: a line within rounding of a face plane of M; was Separated at -4.8e51.
@@ -1075,21 +1086,35 @@ TEST(MddStress, FuzzerScenes) {
     const Vec3d s(0.99999999995725375, -4.2746250983327627e-11, -4.2746250983327627e-11);
     const auto r = scene("sheet Q, s along a face normal of P", P, Q, R, R, tP, tQ, s, 4.0);
     EXPECT_EQ(r.status, MddStatus::Penetrating);
-    // Distance of a world point outside the placed hull of pts (0 inside), by face planes.
-    auto outside = [](const std::vector<Vec3d>& pts, const Mat3d& rot, const Vec3d& t, const Vec3d& w) {
-      const auto X = ConvexPolyhedron<double>::fromPoints(pts);
-      const Vec3d x = rot.transpose() * (w - t);
-      double worst = 0;
-      for (int f = 0; f < X.numFaces(); ++f) {
-        const Vec3d n = X.faceNormal(f).normalized();
-        worst = std::max(worst, n.dot(x - X.vertex(X.faceVertices(f)[0])));
-      }
-      return worst;
-    };
     EXPECT_LT(outside(P, R, tP, r.witnessP), 64 * kEpsD * 4.0);
     EXPECT_LT(outside(Q, R, tQ, r.witnessQ), 64 * kEpsD * 4.0);
   }
-  EXPECT_EQ(fam.queries, 7);
+  {
+    // vertex_contact_sliver_fan_weights: a vertex of P meets a vertex of Q exactly where
+    // an edge of P and a near-parallel edge of Q (2e-10 rad) end, beside near-duplicate
+    // vertices of Q (2e-12 apart). The contact set's fan triangle there was a sliver whose
+    // weights (1 + 6e-8, -1.7e-7, 1.1e-7) rebuilt the line's crossing but put witnessP
+    // 1.1e-7 beyond the end of P's edge. The translation was right.
+    const std::vector<Vec3d> P = {{-1, -1, 2}, {-1, -1, 1}, {-1, 1, 1}, {-1, 2, 2}, {2, 2, 0}, {2, 2, 2}, {1, 2, 2}};
+    const double a = 0x1.ffffffffefp+0, c = 0x1.0000000076p+0;
+    const std::vector<Vec3d> Q = {{a, a, -0x1.fffffffffp-1},
+                                  {a, a, a},
+                                  {a, a, 0x1.00000000008p+1},
+                                  {a, 0x1.000000003bp+1, c},
+                                  {c, c, 0x1.0000000074p+0},
+                                  {c, 0x1.ffffffffdep-1, a},
+                                  {c, c, c},
+                                  {0x1.00000000048p+1, -2, 0x1.ffffffffdep-1},
+                                  {a, a, 0x1.000000003bp+1},
+                                  {0x1.fffffffffep-1, -0x1.00000000008p+1, -0x1.ffffffff8ap+0}};
+    const Mat3d I = Mat3d::Identity();
+    const Vec3d t(1, 1, 1), s(1, 1, 1);
+    const auto r = scene("vertex contact beside a sliver of M", P, Q, I, I, t, t, s, 3.0);
+    EXPECT_EQ(r.status, MddStatus::Penetrating);
+    EXPECT_LT(outside(P, I, t, r.witnessP), 64 * kEpsD * 3.0);
+    EXPECT_LT(outside(Q, I, t, r.witnessQ), 64 * kEpsD * 3.0);
+  }
+  EXPECT_EQ(fam.queries, 8);
   report({fam});
 }
 

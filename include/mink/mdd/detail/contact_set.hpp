@@ -223,10 +223,95 @@ bool locateOrigin2Strict(std::vector<std::pair<std::pair<T, T>, int>>& pts,
   return fanLocate(h, 1, loc);
 }
 
+/// Inexact T: after a location whose weights rebuild the origin but are not all
+/// non-negative (a sliver fan triangle: points nearly collinear, the weights 1 + 6e-8,
+/// -1.7e-7, 1.1e-7), the non-negative combination of a single point, a pair or a triple
+/// of `pts` that rebuilds the origin best replaces it if it rebuilds it as well (or to
+/// 16 eps of the points' size). The weights feed the witnesses: in the sliver above the
+/// edges of P and Q behind it were near-parallel, the combination cancelled in M but left
+/// witnessP 1e-7 beyond the end of P's edge. Small sets only (at most 32 points: 5k
+/// triples); otherwise, and if nothing rebuilds the origin that well, loc is kept.
+template <class T>
+void preferNonNegative(const std::vector<std::pair<std::pair<T, T>, int>>& pts, OriginLocation<T>& loc) {
+  if (!(loc.weight[0] < T(0) || loc.weight[1] < T(0) || loc.weight[2] < T(0))) return;
+  const std::size_t n = pts.size();
+  if (n > 32) return;
+  auto coords = [&](int id) -> const std::pair<T, T>* {
+    for (const auto& p : pts)
+      if (p.second == id) return &p.first;
+    return nullptr;
+  };
+  T x = T(0), y = T(0), size = T(0);
+  for (int i = 0; i < loc.count; ++i) {
+    const std::pair<T, T>* c = coords(loc.id[i]);
+    if (!c) return;
+    x += loc.weight[i] * c->first;
+    y += loc.weight[i] * c->second;
+  }
+  for (const auto& p : pts) size = std::max({size, absValue(p.first.first), absValue(p.first.second)});
+  T bound = std::max(std::max(absValue(x), absValue(y)), T(16) * ScalarTraits<T>::epsilon() * size);
+  OriginLocation<T> best;
+  T bestR = std::numeric_limits<T>::infinity();
+  auto consider = [&](const OriginLocation<T>& c, const std::pair<T, T>* const* q) {
+    T cx = T(0), cy = T(0);
+    for (int i = 0; i < c.count; ++i) {
+      if (c.weight[i] < T(0)) return;
+      cx += c.weight[i] * q[i]->first;
+      cy += c.weight[i] * q[i]->second;
+    }
+    const T r = std::max(absValue(cx), absValue(cy));
+    if (r < bestR) best = c, bestR = r;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::pair<T, T>* a = &pts[i].first;
+    OriginLocation<T> c;
+    c.count = 1;
+    c.id[0] = pts[i].second;
+    c.weight[0] = T(1);
+    consider(c, &a);
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const std::pair<T, T>* b = &pts[j].first;
+      const T dx = b->first - a->first, dy = b->second - a->second, len2 = dx * dx + dy * dy;
+      if (len2 > T(0)) {
+        const T l = std::min(T(1), std::max(T(0), (-a->first * dx - a->second * dy) / len2));
+        OriginLocation<T> s2;
+        s2.count = 2;
+        s2.id[0] = pts[i].second;
+        s2.id[1] = pts[j].second;
+        s2.weight[0] = T(1) - l;
+        s2.weight[1] = l;
+        const std::pair<T, T>* ab[2] = {a, b};
+        consider(s2, ab);
+      }
+      for (std::size_t k = j + 1; k < n; ++k) {
+        const std::pair<T, T>* d = &pts[k].first;
+        const T A = dx * (d->second - a->second) - dy * (d->first - a->first);
+        if (A == T(0)) continue;
+        const T wb = (-a->first * (d->second - a->second) + a->second * (d->first - a->first)) / A;
+        const T wc = (dx * -a->second - dy * -a->first) / A;
+        OriginLocation<T> s3;
+        s3.count = 3;
+        s3.id[0] = pts[i].second;
+        s3.id[1] = pts[j].second;
+        s3.id[2] = pts[k].second;
+        s3.weight[0] = T(1) - wb - wc;
+        s3.weight[1] = wb;
+        s3.weight[2] = wc;
+        const std::pair<T, T>* abd[3] = {a, b, d};
+        consider(s3, abd);
+      }
+    }
+  }
+  if (bestR <= bound) loc = best;
+}
+
 template <class T>
 bool locateOrigin2(std::vector<std::pair<std::pair<T, T>, int>>& pts, std::vector<std::pair<std::pair<T, T>, int>>& h,
                    OriginLocation<T>& loc, const T& slack = T(0)) {
-  if (locateOrigin2Strict(pts, h, loc)) return true;
+  if (locateOrigin2Strict(pts, h, loc)) {
+    if constexpr (!ScalarTraits<T>::isExact) preferNonNegative(pts, loc);
+    return true;
+  }
   if (!(slack > T(0)) || h.empty()) return false;
   // Nearest point of the hull's boundary (h: its vertices in order, after the call).
   T best = T(-1);
