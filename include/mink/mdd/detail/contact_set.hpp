@@ -61,6 +61,50 @@ struct OriginLocation {
   T weight[3] = {T(0), T(0), T(0)};
 };
 
+/// loc := the origin's barycentric weights in the triangle of points a, b, c (ids ia, ib,
+/// ic), unchecked: they may be negative or noise. False when the triangle has zero area.
+template <class T>
+bool triangleWeights(const std::pair<T, T>& a, int ia, const std::pair<T, T>& b, int ib, const std::pair<T, T>& c,
+                     int ic, OriginLocation<T>& loc) {
+  const T dx = b.first - a.first, dy = b.second - a.second;
+  const T A = dx * (c.second - a.second) - dy * (c.first - a.first);
+  if (A == T(0)) return false;
+  const T wb = (-a.first * (c.second - a.second) + a.second * (c.first - a.first)) / A;
+  const T wc = (dx * -a.second - dy * -a.first) / A;
+  loc.count = 3;
+  loc.id[0] = ia;
+  loc.id[1] = ib;
+  loc.id[2] = ic;
+  loc.weight[0] = T(1) - wb - wc;
+  loc.weight[1] = wb;
+  loc.weight[2] = wc;
+  return true;
+}
+
+/// loc := the nearest point to the origin of the segment a b (ids ia, ib), as weights of
+/// its ends (a itself when a == b). False when a == b.
+template <class T>
+bool segmentProjection(const std::pair<T, T>& a, int ia, const std::pair<T, T>& b, int ib, OriginLocation<T>& loc) {
+  const T dx = b.first - a.first, dy = b.second - a.second;
+  const T len2 = dx * dx + dy * dy;
+  T l = T(0);
+  if (len2 > T(0)) l = std::min(T(1), std::max(T(0), (-a.first * dx - a.second * dy) / len2));
+  loc.count = 2;
+  loc.id[0] = ia;
+  loc.id[1] = ib;
+  loc.weight[0] = T(1) - l;
+  loc.weight[1] = l;
+  return len2 > T(0);
+}
+
+/// max(|x|, |y|) of the point the weights of `loc` make of the points q[0..count).
+template <class T>
+T combinationSize(const OriginLocation<T>& loc, const std::pair<T, T>* const* q) {
+  T x = T(0), y = T(0);
+  for (int i = 0; i < loc.count; ++i) x += loc.weight[i] * q[i]->first, y += loc.weight[i] * q[i]->second;
+  return std::max(absValue(x), absValue(y));
+}
+
 /// loc := the origin's barycentric coordinates in the triangle of points a, b, c (with
 /// their ids); false when the triangle is degenerate.
 template <class T>
@@ -69,17 +113,7 @@ bool triangleLocation(const std::pair<std::pair<T, T>, int>& pa, const std::pair
   const auto& a = pa.first;
   const auto& b = pb.first;
   const auto& c = pc.first;
-  const T A = (b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first);
-  if (A == T(0)) return false;
-  const T wb = (-a.first * (c.second - a.second) + a.second * (c.first - a.first)) / A;
-  const T wc = ((b.first - a.first) * -a.second - (b.second - a.second) * -a.first) / A;
-  loc.count = 3;
-  loc.id[0] = pa.second;
-  loc.id[1] = pb.second;
-  loc.id[2] = pc.second;
-  loc.weight[0] = T(1) - wb - wc;
-  loc.weight[1] = wb;
-  loc.weight[2] = wc;
+  if (!triangleWeights(a, pa.second, b, pb.second, c, pc.second, loc)) return false;
   if constexpr (!ScalarTraits<T>::isExact) {
     // Three points collinear up to rounding (the hull kept a point in the middle of an
     // edge, by a rounded orientation) or a sliver: A is (nearly) noise and so are the
@@ -89,25 +123,20 @@ bool triangleLocation(const std::pair<std::pair<T, T>, int>& pa, const std::pair
     // weights clamped at zero, or by the origin's projection on the longest side,
     // whichever rebuilds it best; if neither does (and the weights were clearly negative)
     // the triangle does not hold the origin.
-    auto at = [&](const OriginLocation<T>& l, const std::pair<T, T>* const* q) {
-      T x = T(0), y = T(0);
-      for (int i = 0; i < l.count; ++i) x += l.weight[i] * q[i]->first, y += l.weight[i] * q[i]->second;
-      return std::max(absValue(x), absValue(y));
-    };
     const std::pair<T, T>* abc[3] = {&a, &b, &c};
     const T size = std::max({absValue(a.first), absValue(a.second), absValue(b.first), absValue(b.second),
                              absValue(c.first), absValue(c.second)});
     const T R = T(16) * ScalarTraits<T>::epsilon() * size;
     const T slackW = T(1) / T(1024);
     const bool negative = loc.weight[0] < -slackW || loc.weight[1] < -slackW || loc.weight[2] < -slackW;
-    T r = negative ? std::numeric_limits<T>::infinity() : at(loc, abc);
+    T r = negative ? std::numeric_limits<T>::infinity() : combinationSize(loc, abc);
     if (!(r <= R)) {
       OriginLocation<T> clamped = loc;
       T sum = T(0);
       for (int i = 0; i < 3; ++i) sum += clamped.weight[i] = std::max(T(0), clamped.weight[i]);
       if (sum > T(0)) {
         for (int i = 0; i < 3; ++i) clamped.weight[i] /= sum;
-        const T rc = at(clamped, abc);
+        const T rc = combinationSize(clamped, abc);
         if (rc < r) loc = clamped, r = rc;
       }
     }
@@ -121,18 +150,10 @@ bool triangleLocation(const std::pair<std::pair<T, T>, int>& pa, const std::pair
       const std::pair<std::pair<T, T>, int>* q = &pb;
       if (ac >= ab && ac >= bc) q = &pc;
       if (bc > ab && bc > ac) p = &pb, q = &pc;
-      const T dx = q->first.first - p->first.first, dy = q->first.second - p->first.second;
-      const T len2 = dx * dx + dy * dy;
-      if (len2 > T(0)) {
-        OriginLocation<T> seg;
-        const T l = std::min(T(1), std::max(T(0), (-p->first.first * dx - p->first.second * dy) / len2));
-        seg.count = 2;
-        seg.id[0] = p->second;
-        seg.id[1] = q->second;
-        seg.weight[0] = T(1) - l;
-        seg.weight[1] = l;
+      OriginLocation<T> seg;
+      if (segmentProjection(p->first, p->second, q->first, q->second, seg)) {
         const std::pair<T, T>* pq[2] = {&p->first, &q->first};
-        const T rs = at(seg, pq);
+        const T rs = combinationSize(seg, pq);
         if (rs < r) loc = seg, r = rs;
       }
     }
@@ -241,25 +262,18 @@ void preferNonNegative(const std::vector<std::pair<std::pair<T, T>, int>>& pts, 
       if (p.second == id) return &p.first;
     return nullptr;
   };
-  T x = T(0), y = T(0), size = T(0);
-  for (int i = 0; i < loc.count; ++i) {
-    const std::pair<T, T>* c = coords(loc.id[i]);
-    if (!c) return;
-    x += loc.weight[i] * c->first;
-    y += loc.weight[i] * c->second;
-  }
+  const std::pair<T, T>* at[3] = {nullptr, nullptr, nullptr};
+  for (int i = 0; i < loc.count; ++i)
+    if (!(at[i] = coords(loc.id[i]))) return;
+  T size = T(0);
   for (const auto& p : pts) size = std::max({size, absValue(p.first.first), absValue(p.first.second)});
-  T bound = std::max(std::max(absValue(x), absValue(y)), T(16) * ScalarTraits<T>::epsilon() * size);
+  const T bound = std::max(combinationSize(loc, at), T(16) * ScalarTraits<T>::epsilon() * size);
   OriginLocation<T> best;
   T bestR = std::numeric_limits<T>::infinity();
   auto consider = [&](const OriginLocation<T>& c, const std::pair<T, T>* const* q) {
-    T cx = T(0), cy = T(0);
-    for (int i = 0; i < c.count; ++i) {
+    for (int i = 0; i < c.count; ++i)
       if (c.weight[i] < T(0)) return;
-      cx += c.weight[i] * q[i]->first;
-      cy += c.weight[i] * q[i]->second;
-    }
-    const T r = std::max(absValue(cx), absValue(cy));
+    const T r = combinationSize(c, q);
     if (r < bestR) best = c, bestR = r;
   };
   for (std::size_t i = 0; i < n; ++i) {
@@ -271,34 +285,11 @@ void preferNonNegative(const std::vector<std::pair<std::pair<T, T>, int>>& pts, 
     consider(c, &a);
     for (std::size_t j = i + 1; j < n; ++j) {
       const std::pair<T, T>* b = &pts[j].first;
-      const T dx = b->first - a->first, dy = b->second - a->second, len2 = dx * dx + dy * dy;
-      if (len2 > T(0)) {
-        const T l = std::min(T(1), std::max(T(0), (-a->first * dx - a->second * dy) / len2));
-        OriginLocation<T> s2;
-        s2.count = 2;
-        s2.id[0] = pts[i].second;
-        s2.id[1] = pts[j].second;
-        s2.weight[0] = T(1) - l;
-        s2.weight[1] = l;
-        const std::pair<T, T>* ab[2] = {a, b};
-        consider(s2, ab);
-      }
+      const std::pair<T, T>* ab[2] = {a, b};
+      if (segmentProjection(*a, pts[i].second, *b, pts[j].second, c)) consider(c, ab);
       for (std::size_t k = j + 1; k < n; ++k) {
-        const std::pair<T, T>* d = &pts[k].first;
-        const T A = dx * (d->second - a->second) - dy * (d->first - a->first);
-        if (A == T(0)) continue;
-        const T wb = (-a->first * (d->second - a->second) + a->second * (d->first - a->first)) / A;
-        const T wc = (dx * -a->second - dy * -a->first) / A;
-        OriginLocation<T> s3;
-        s3.count = 3;
-        s3.id[0] = pts[i].second;
-        s3.id[1] = pts[j].second;
-        s3.id[2] = pts[k].second;
-        s3.weight[0] = T(1) - wb - wc;
-        s3.weight[1] = wb;
-        s3.weight[2] = wc;
-        const std::pair<T, T>* abd[3] = {a, b, d};
-        consider(s3, abd);
+        const std::pair<T, T>* abd[3] = {a, b, &pts[k].first};
+        if (triangleWeights(*a, pts[i].second, *b, pts[j].second, pts[k].first, pts[k].second, c)) consider(c, abd);
       }
     }
   }
@@ -318,20 +309,13 @@ bool locateOrigin2(std::vector<std::pair<std::pair<T, T>, int>>& pts, std::vecto
   for (std::size_t i = 0; i < h.size(); ++i) {
     const auto& a = h[i];
     const auto& b = h[(i + 1) % h.size()];
-    const T dx = b.first.first - a.first.first, dy = b.first.second - a.first.second;
-    const T len2 = dx * dx + dy * dy;
-    T l = T(0);
-    if (len2 > T(0)) l = std::min(T(1), std::max(T(0), (-a.first.first * dx - a.first.second * dy) / len2));
-    const T px = a.first.first + l * dx, py = a.first.second + l * dy;
+    OriginLocation<T> seg;
+    segmentProjection(a.first, a.second, b.first, b.second, seg);
+    const T l = seg.weight[1];
+    const T px = a.first.first + l * (b.first.first - a.first.first);
+    const T py = a.first.second + l * (b.first.second - a.first.second);
     const T d2 = px * px + py * py;
-    if (best < T(0) || d2 < best) {
-      best = d2;
-      loc.count = 2;
-      loc.id[0] = a.second;
-      loc.id[1] = b.second;
-      loc.weight[0] = T(1) - l;
-      loc.weight[1] = l;
-    }
+    if (best < T(0) || d2 < best) best = d2, loc = seg;
   }
   return best <= slack * slack;
 }
