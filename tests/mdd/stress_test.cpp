@@ -340,6 +340,12 @@ std::vector<mink::MddResult<T>> runQueries(Family& fam, const Built<T>& b, const
     what << b.setup.label << " tP (" << b.setup.transP.transpose() << ") query " << i << " " << qs[i].label << " tQ (" << qs[i].tQ.transpose() << ") s ("
          << qs[i].s.transpose() << ")";
     checkOne(fam, r, b.ref, exactOf(qs[i].s), u, touchTolerance(b.P, poseP, b.Q, poseQ), L, what.str());
+    // MINK_STRESS_DUMP=1: every answer bit for bit, to diff two builds (a refactor of the
+    // library must leave this output unchanged).
+    if (std::getenv("MINK_STRESS_DUMP"))
+      std::printf("DUMP %s | %d %a %a | %a %a %a | %a %a %a\n", what.str().c_str(), int(r.status), double(r.translation),
+                  double(r.parameter), double(r.witnessP[0]), double(r.witnessP[1]), double(r.witnessP[2]),
+                  double(r.witnessQ[0]), double(r.witnessQ[1]), double(r.witnessQ[2]));
   }
   return out;
 }

@@ -312,6 +312,15 @@ inline void MinkowskiDifferenceReference::build(const std::vector<Vec3r>& P,
     exactOf[v.idx()] = Vec3r(d::fromET(e.x()), d::fromET(e.y()), d::fromET(e.z()));
     vertices_.push_back(exactOf[v.idx()]);
   }
+  // In lexicographic order: the hull's own vertex order depends on more than the input
+  // (the stress tests sample lines through these vertices; it must not vary between runs).
+  std::sort(vertices_.begin(), vertices_.end(), [](const Vec3r& a, const Vec3r& b) {
+    for (int i = 0; i < 3; ++i) {
+      if (a[i] < b[i]) return true;
+      if (b[i] < a[i]) return false;
+    }
+    return false;
+  });
 
   std::vector<MddRefPlane> planes;
   triangles_ = 0;
