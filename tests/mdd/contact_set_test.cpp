@@ -139,4 +139,66 @@ TEST(ContactSet, RandomPolygonsWithCollinearPoints) {
   EXPECT_GT(located, 2000);
 }
 
+// preferNonNegative (inexact T, after a location with a negative weight): the weights
+// 0.5 - 5e-8, 0.5 + 1.5e-8, -1e-7 of a sliver triangle rebuild the origin to rounding
+// (the third point is 1e-20 off the line of the other two), as the fuzzer's
+// vertex_contact_sliver_fan_weights did; they are replaced by the non-negative pair.
+TEST(ContactSet, PreferNonNegativeReplacesSliverWeights) {
+  const std::vector<P2> pts = {{{-1.0, 0.0}, 0}, {{1.0, 0.0}, 1}, {{2.0, 1e-20}, 2}, {{0.0, 3.0}, 3}};
+  mink::detail::OriginLocation<double> loc;
+  loc.count = 3;
+  loc.id[0] = 0, loc.id[1] = 1, loc.id[2] = 2;
+  loc.weight[0] = 0.5 - 0.5e-7, loc.weight[1] = 0.5 + 1.5e-7, loc.weight[2] = -1e-7;
+  bool convex = true;
+  ASSERT_LE(residual(pts, loc, convex), 1e-15);
+  ASSERT_FALSE(convex);
+  mink::detail::preferNonNegative(pts, loc);
+  EXPECT_LE(residual(pts, loc, convex), 1e-15);
+  EXPECT_TRUE(convex) << "weights " << loc.weight[0] << " " << loc.weight[1] << " " << loc.weight[2];
+  EXPECT_EQ(loc.count, 2);
+}
+
+// ... and kept when no non-negative combination rebuilds the origin as well (the origin
+// outside the points' hull: weights 2, -1 rebuild it exactly), when the set is too large
+// to search (more than 32 points), and when the weights are already non-negative.
+TEST(ContactSet, PreferNonNegativeKeepsWhatItCannotImprove) {
+  auto same = [](const mink::detail::OriginLocation<double>& a, const mink::detail::OriginLocation<double>& b) {
+    if (a.count != b.count) return false;
+    for (int i = 0; i < a.count; ++i)
+      if (a.id[i] != b.id[i] || a.weight[i] != b.weight[i]) return false;
+    return true;
+  };
+  mink::detail::OriginLocation<double> outside;
+  outside.count = 2;
+  outside.id[0] = 0, outside.id[1] = 1;
+  outside.weight[0] = 2.0, outside.weight[1] = -1.0;
+  const std::vector<P2> far = {{{1.0, 0.0}, 0}, {{2.0, 0.0}, 1}, {{1.0, 1.0}, 2}};
+  mink::detail::OriginLocation<double> loc = outside;
+  mink::detail::preferNonNegative(far, loc);
+  EXPECT_TRUE(same(loc, outside));
+
+  std::vector<P2> many = {{{-1.0, 0.0}, 0}, {{1.0, 0.0}, 1}, {{2.0, 1e-20}, 2}};
+  for (int i = 3; i < 33; ++i) many.push_back({{std::cos(i), 3.0 + std::sin(i)}, i});
+  mink::detail::OriginLocation<double> sliver;
+  sliver.count = 3;
+  sliver.id[0] = 0, sliver.id[1] = 1, sliver.id[2] = 2;
+  sliver.weight[0] = 0.5 - 0.5e-7, sliver.weight[1] = 0.5 + 1.5e-7, sliver.weight[2] = -1e-7;
+  loc = sliver;
+  mink::detail::preferNonNegative(many, loc);
+  EXPECT_TRUE(same(loc, sliver));
+  many.pop_back();  // 32 points: searched
+  mink::detail::preferNonNegative(many, loc);
+  bool convex = false;
+  EXPECT_LE(residual(many, loc, convex), 1e-15);
+  EXPECT_TRUE(convex);
+
+  mink::detail::OriginLocation<double> fine;
+  fine.count = 3;
+  fine.id[0] = 0, fine.id[1] = 1, fine.id[2] = 3;
+  fine.weight[0] = 0.5, fine.weight[1] = 0.5, fine.weight[2] = 0.0;
+  loc = fine;
+  mink::detail::preferNonNegative(many, loc);
+  EXPECT_TRUE(same(loc, fine));
+}
+
 }  // namespace
