@@ -161,7 +161,14 @@ inline bool equalPlane(const MddRefPlane& a, const MddRefPlane& b) {
 inline double signedLength(const Rational& t, const Rational& s2) {
   const int sg = sign(t);
   if (sg == 0) return 0.0;
-  const double v = std::sqrt(CGAL::to_double(Rational(t * t * s2)));
+  // t^2 s2 is scaled by powers of 4 into the double range first: for lengths of 1e-223
+  // it is 1e-446, zero in double (and 1e-223 is a length double holds).
+  Rational x = t * t * s2;
+  int half = 0;  // x = (t^2 s2) 4^half
+  const Rational up(std::ldexp(1.0, 400)), down(std::ldexp(1.0, -400));
+  while (CGAL::to_double(x) < 1e-200) x *= up, half += 200;
+  while (CGAL::to_double(x) > 1e200) x *= down, half -= 200;
+  const double v = std::ldexp(std::sqrt(CGAL::to_double(x)), -half);
   return sg > 0 ? v : -v;
 }
 
