@@ -439,7 +439,7 @@ TEST(MddStress, ScaleDouble) {
     n << "scale x" << c << " (double)";
     rows.push_back({n.str(), kScaleBound, "shape radius 5 x scale"});
   }
-  Family pow2{"scale x2^-40, x2^40: bit-exact (double)", kScaleBound, "shape radius 5 x scale"};
+  Family pow2{"scale x2^-900 ... x2^250: bit-exact (double)", kScaleBound, "shape radius 5 x scale"};
   long bitChecked = 0;
   for (const auto& pr : kCheapPairs) {
     const auto ptsP = mink_test::paperShape(pr.first, rng);
@@ -458,8 +458,14 @@ TEST(MddStress, ScaleDouble) {
       const auto res = runQueries(rows[si], b, castQueries<double>(qs, c), kR * c);
       if (c == 1.0) unit = res;
     }
-    // Powers of two: exact scaling of every input, so the answers must scale exactly.
-    for (int k : {-40, 40}) {
+    // Powers of two: exact scaling of every input, so the answers must scale exactly,
+    // out to the ends of the range (2^-900: products of two coordinates underflow, and
+    // every 2-D test of the centre of duality did before it worked in scaled units;
+    // 2^250: near ScalarTraits::largestCoordinate()). Not 2^-1000: the shapes'
+    // coordinates would be subnormal, rounded, no longer an exact scaling.
+    const auto Pu = ConvexPolyhedron<double>::fromPoints(ptsP);
+    const auto Qu = ConvexPolyhedron<double>::fromPoints(ptsQ);
+    for (int k : {-40, 40, -100, 100, 250, -300, -700, -900}) {
       const double c = std::ldexp(1.0, k);
       const auto P = ConvexPolyhedron<double>::fromPoints(scaled(ptsP, c));
       const auto Q = ConvexPolyhedron<double>::fromPoints(scaled(ptsQ, c));
@@ -469,14 +475,26 @@ TEST(MddStress, ScaleDouble) {
         poseQ.translation = qs[i].tQ * c;
         const auto r = mink::mdd(P, Pose<double>(), Q, poseQ, qs[i].s);
         const auto& u = unit[i];
+        Pose<double> poseQu = poseQ;
+        poseQu.translation = qs[i].tQ;
         SCOPED_TRACE("seed " + std::to_string(seed) + " pair " + pairName(pr) + " 2^" + std::to_string(k) +
                      " query " + std::to_string(i));
         ++pow2.queries;
+        EXPECT_EQ(mink::intersects(P, Pose<double>(), Q, poseQ), mink::intersects(Pu, Pose<double>(), Qu, poseQu));
         EXPECT_EQ(r.status, u.status);
         EXPECT_EQ(r.faceType, u.faceType);
         EXPECT_EQ(r.featureP, u.featureP);
         EXPECT_EQ(r.featureQ, u.featureQ);
+        // The same search, face for face: no test decided by underflow or overflow.
+        EXPECT_EQ(r.visitedFV, u.visitedFV);
+        EXPECT_EQ(r.visitedVF, u.visitedVF);
+        EXPECT_EQ(r.visitedEE, u.visitedEE);
+        EXPECT_EQ(r.usedFallback, u.usedFallback);
         if (u.status != MddStatus::NoContact) {
+          for (int j = 0; j < 3; ++j) {
+            EXPECT_EQ(r.witnessP[j], std::ldexp(u.witnessP[j], k));
+            EXPECT_EQ(r.witnessQ[j], std::ldexp(u.witnessQ[j], k));
+          }
           EXPECT_EQ(r.translation, std::ldexp(u.translation, k)) << u.translation;
           EXPECT_EQ(r.parameter, std::ldexp(u.parameter, k));  // s is not scaled
         }
@@ -1120,7 +1138,40 @@ TEST(MddStress, FuzzerScenes) {
     EXPECT_LT(outside(P, I, t, r.witnessP), 64 * kEpsD * 3.0);
     EXPECT_LT(outside(Q, I, t, r.witnessQ), 64 * kEpsD * 3.0);
   }
-  EXPECT_EQ(fam.queries, 8);
+  {
+    // tiny_scene_products_underflow: P = Q, shapes of 1e-222 (vertex coordinates 2^-752 to
+    // 2^-737), overlapping by a sixth of their size. Every 2-D test of the centre of
+    // duality multiplied two coordinates (1e-444: zero in double) and mdd said NoContact
+    // at once; intersects() compared products of x0 (1e-222) and face offsets that
+    // underflowed too. Both now work in units of 2^e near the scene's size.
+    const std::vector<Vec3d> P = {{0x1p-744, 0x1.01p-744, 0x1.81p-744},
+                                  {0x1.01p-744, 0x1.03p-744, 0x1.808p-743},
+                                  {0x1.01p-744, 0x1.0c0cp-738, 0x1.808p-743},
+                                  {0x1.01p-744, 0x1.03p-744, 0x1.ffp-744},
+                                  {0x1.03p-744, 0x1.808p-743, 0x1.818p-743},
+                                  {0x1.81p-743, 0x1.01p-744, -0x1.7578p-738},
+                                  {-0x1.7578p-738, -0x1.7578p-738, -0x1.77fcp-738},
+                                  {0x1.02p-743, 0x1.008p-743, 0x1.088p-742},
+                                  {0x1p-751, 0x1p-744, 0x1.004p-742},
+                                  {0x1.01p-743, 0x1.01p-743, -0x1.fep-745},
+                                  {-0x1p-752, -0x1p-752, -0x1p-752}};
+    Mat3d RP, RQ;
+    RP << 0.73333333333333339, 0.13333333333333336, 0.66666666666666652,  //
+        0.66666666666666652, -0.33333333333333348, -0.66666666666666663,     //
+        0.13333333333333336, 0.93333333333333324, -0.33333333333333348;
+    RQ << -0.33328303595005448, -0.6737334490173148, 0.65954958693273968,  //
+        0.65954958693273968, 0.33328303595005482, 0.6737334490173148,      //
+        -0.6737334490173148, 0.65954958693273968, 0.33328303595005482;
+    const Vec3d o(0, 0, 0), s(3.092281986027956e-11, -8.5492501966655254e-11, -8.5492501966655254e-11);
+    const auto r = scene("P = Q of 1e-222, overlapping", P, P, RP, RQ, o, o, s, 1.7e-222);
+    EXPECT_EQ(r.status, MddStatus::Penetrating);
+    Pose<double> poseP, poseQ;
+    poseP.rotation = RP;
+    poseQ.rotation = RQ;
+    const auto X = ConvexPolyhedron<double>::fromPoints(P);
+    EXPECT_TRUE(mink::intersects(X, poseP, X, poseQ));
+  }
+  EXPECT_EQ(fam.queries, 9);
   report({fam});
 }
 

@@ -98,6 +98,19 @@ bool surelyUphill(const Eigen::Matrix<T, 3, 1>& d, const Eigen::Matrix<T, 3, 1>&
   }
 }
 
+/// 2^k v, componentwise ldexp (exact unless a component leaves the normal range), for
+/// inexact scalars; v itself for exact scalars.
+template <class T>
+Eigen::Matrix<T, 3, 1> timesPow2(const Eigen::Matrix<T, 3, 1>& v, int k) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    (void)k;
+    return v;
+  } else {
+    using std::ldexp;
+    return Eigen::Matrix<T, 3, 1>(ldexp(v[0], k), ldexp(v[1], k), ldexp(v[2], k));
+  }
+}
+
 /// v scaled by a power of two (exact) so that its largest |component| is in [1, 2), for
 /// inexact scalars; v itself for exact scalars and for zero. The direction of a vector
 /// of 1e-232 (a portal edge between shapes 1e-236 wide) or of 1e172 (the normal of

@@ -21,6 +21,7 @@
 // vertices, and capped by defaults::kMddPortalFactor for inexact T.
 #pragma once
 
+#include <cmath>
 #include <utility>
 
 #include "mink/core/defaults.hpp"
@@ -67,7 +68,16 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
   const auto basis = detail::orthogonalBasis(s);
   const Vec3<T>& u1 = basis.first;
   const Vec3<T>& u2 = basis.second;
-  auto proj = [&](const Vec3<T>& x) { return Pt2<T>(x.dot(u1), x.dot(u2)); };
+  // In units of 2^e for a scene far from unit order (PairFrame::unitScaleExponent;
+  // exact, and every test below is homogeneous in the coordinates).
+  const int e = F.unitScaleExponent();
+  auto proj = [&](const Vec3<T>& x) {
+    if constexpr (!ScalarTraits<T>::isExact) {
+      using std::ldexp;
+      if (e != 0) return Pt2<T>(ldexp(T(x.dot(u1)), -e), ldexp(T(x.dot(u2)), -e));
+    }
+    return Pt2<T>(x.dot(u1), x.dot(u2));
+  };
   auto lift = [&](const Pt2<T>& d) { return Vec3<T>(d.first * u1 + d.second * u2); };
   // Support point of M along the 3-D direction of the 2-D direction d.
   auto support = [&](const Pt2<T>& d) {

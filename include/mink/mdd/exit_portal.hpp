@@ -49,11 +49,15 @@ ExitPortal<T> exitPortal(const detail::PairFrame<T>& F, const Vec3<T>& c, const 
   // Discovery directions jump across the sphere: the hierarchy or a seeded hill-climb
   // (support_seeds.hpp). Refinement directions move less: the hierarchy on large shapes,
   // else a hill-climb from the portal corner furthest along the new direction.
+  // Corners in units of 2^e for a scene far from unit order (exact; every test below is
+  // homogeneous in them): products of two or three coordinates of 1e-224 underflow.
+  const int e = F.unitScaleExponent();
   auto support = [&](const Vec3<T>& d, bool far) {
     ++out.steps;
     hintP = far ? F.supportPFar(d, hintP) : F.supportPRefine(d, hintP);
     hintQ = far ? F.supportMinusQFar(d, hintQ) : F.supportMinusQRefine(d, hintQ);
-    return Corner{Vec3<T>(F.P().vertex(hintP) - F.q(hintQ) - c), hintP, hintQ};
+    const Vec3<T> a = F.P().vertex(hintP) - F.q(hintQ) - c;
+    return Corner{e != 0 ? detail::timesPow2(a, -e) : a, hintP, hintQ};
   };
   auto finish = [&](const Vec3<T>& n, const Corner& at, bool converged) {
     out.normal = n;

@@ -122,9 +122,16 @@ class MddQuery {
     u1_ = b.first;
     u2_ = b.second;
     if constexpr (!ScalarTraits<T>::isExact) {
-      // Unit vectors, so that the facet check's slack is a length.
+      // Unit vectors, so that the facet check's slack is a length; for a scene far from
+      // unit order, 2^-e times unit vectors (PairFrame::unitScaleExponent): the facets'
+      // 2-D points then have coordinates of unit order (exactly scaled), whose products
+      // in the contact set's tests neither underflow nor overflow, and the slacks are
+      // scaled with them (slackUnits).
       u1_.normalize();
       u2_.normalize();
+      unitExp_ = F.unitScaleExponent();
+      u1_ = inUnits(u1_);
+      u2_ = inUnits(u2_);
     }
   }
 
@@ -518,9 +525,20 @@ class MddQuery {
         cache_.points2.push_back({{y.dot(u1_), y.dot(u2_)}, static_cast<int>(i * cache_.setQ.size() + j)});
       }
     OriginLocation<T> loc;
-    if (!locateOrigin2(cache_.points2, cache_.hull2, loc, slack)) return false;
+    if (!locateOrigin2(cache_.points2, cache_.hull2, loc, slackUnits(slack))) return false;
     setWitnesses(loc);
     return true;
+  }
+
+  /// A vector in the units of the 2-D points (see u1_, u2_): 2^-e times it (exact).
+  Vec3<T> inUnits(const Vec3<T>& v) const { return unitExp_ != 0 ? timesPow2(v, -unitExp_) : v; }
+  /// A length in the units of the 2-D points (see u1_, u2_).
+  T slackUnits(const T& length) const {
+    if constexpr (!ScalarTraits<T>::isExact) {
+      using std::ldexp;
+      if (unitExp_ != 0) return ldexp(length, -unitExp_);
+    }
+    return length;
   }
 
   /// Witnesses at the point Y (frame of P) of the facet whose support sets the last facet
@@ -535,6 +553,8 @@ class MddQuery {
     if constexpr (!ScalarTraits<T>::isExact) {
       a.normalize();
       b.normalize();
+      a = inUnits(a);
+      b = inUnits(b);
     }
     cache_.points2.clear();
     for (std::size_t i = 0; i < cache_.setP.size(); ++i)
@@ -543,7 +563,7 @@ class MddQuery {
         cache_.points2.push_back({{y.dot(a), y.dot(b)}, static_cast<int>(i * cache_.setQ.size() + j)});
       }
     OriginLocation<T> loc;
-    if (!locateOrigin2(cache_.points2, cache_.hull2, loc, numTol_)) return false;
+    if (!locateOrigin2(cache_.points2, cache_.hull2, loc, slackUnits(numTol_))) return false;
     setWitnesses(loc);
     return true;
   }
@@ -579,7 +599,8 @@ class MddQuery {
     cache_.ab.clear();
     for (int ip : cache_.setP)
       for (int iq : cache_.setQ) {
-        const Vec3<T> y = P.vertex(ip) - F_.q(iq);
+        // In 2^e units (see u1_): the crossings below multiply two coordinates.
+        const Vec3<T> y = inUnits(Vec3<T>(P.vertex(ip) - F_.q(iq)));
         cache_.ab.push_back({y.dot(s_), y.dot(e)});
       }
     bool any = false;
@@ -601,6 +622,10 @@ class MddQuery {
     const T ss = s_.squaredNorm();
     tlo = amin / ss;
     thi = amax / ss;
+    if constexpr (!ScalarTraits<T>::isExact) {
+      using std::ldexp;
+      if (unitExp_ != 0) tlo = ldexp(tlo, unitExp_), thi = ldexp(thi, unitExp_);
+    }
     return true;
   }
 
@@ -664,6 +689,7 @@ class MddQuery {
   T scene_ = T(0), sLength_ = T(1);  // inexact T: the scene size (as numTol_'s) and |s|
   long long cap_;
   Vec3<T> u1_, u2_;
+  int unitExp_ = 0;  // inexact T: PairFrame::unitScaleExponent (u1_, u2_ are 2^-e units)
   Vec3<T> wP_ = Vec3<T>::Zero(), wQ_ = Vec3<T>::Zero();
   std::vector<std::pair<T, MFace<T>>> tiesScratch_;
   bool checkFailed_ = false;
@@ -739,10 +765,14 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
         const Vec3<T> p0 = toWorld(P.vertex(ep.first)), dp = toWorld(P.vertex(ep.second)) - p0;
         const Vec3<T> q0 = poseQ.rotation * Q.vertex(eq.first) + poseQ.translation;
         const Vec3<T> dq = poseQ.rotation * Vec3<T>(Q.vertex(eq.second) - Q.vertex(eq.first));
-        const Vec3<T> N = dp.cross(dq), d = param * s - (p0 - q0);
+        // lambda and mu are ratios of degree 0 in lengths: solved in the query's 2^e units
+        // (scene far from unit order), where |N|^2, of degree 4, neither underflows nor
+        // overflows.
+        const Vec3<T> dpu = query.inUnits(dp), dqu = query.inUnits(dq);
+        const Vec3<T> N = dpu.cross(dqu), d = query.inUnits(Vec3<T>(param * s - (p0 - q0)));
         const T n2 = N.squaredNorm();
         if (n2 > T(0) && std::isfinite(n2)) {
-          const T lambda = N.dot(d.cross(dq)) / n2, mu = -N.dot(dp.cross(d)) / n2;
+          const T lambda = N.dot(d.cross(dqu)) / n2, mu = -N.dot(dpu.cross(d)) / n2;
           // Only where the line crosses this parallelogram (not a coplanar neighbour of
           // the facet that the facet check accepted).
           const T slack = T(1e-6);
@@ -763,7 +793,7 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
       // Only if the contact point lies on that facet: where the parameter itself is off
       // along a grazing line (1e-7 of a 1e26 scene), the crossing found along s, on the
       // line and on the facet, is the better pair.
-      if (res.faceType != MddFaceType::Grazing && r2.norm() > query.slack() &&
+      if (res.faceType != MddFaceType::Grazing && query.inUnits(r2).norm() > query.slackUnits(query.slack()) &&
           query.witnessesAt(Vec3<T>(param * sl), Vec3<T>(RPt * res.normal))) {
         res.witnessP = toWorld(query.witnessP());
         res.witnessQ = toWorld(query.witnessQ());
@@ -1014,7 +1044,11 @@ bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Convex
   detail::MddQuery<T> query(F, x0, cache, options, res);
   bool separated = false;
   detail::MFace<T> separator;
-  detail::MFace<T> f = query.exitFace(Vec3<T>(-x0), x0, true, &separated, &separator);
+  // The search direction at unit order (exact scaling, and the searches compare ratios
+  // homogeneous in it): for shapes of 1e-224, x0 times the faces' offsets underflowed and
+  // the searches' comparisons were all false (overlap reported for shapes apart).
+  const Vec3<T> towards = detail::unitOrder(Vec3<T>(-x0));
+  detail::MFace<T> f = query.exitFace(towards, x0, true, &separated, &separator);
   if (separated) {
     if constexpr (ScalarTraits<T>::isExact) {
       return false;
@@ -1028,7 +1062,7 @@ bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Convex
       const int vp = F.supportP(N, cache.vertexP), vq = F.supportMinusQ(N, cache.vertexQ);
       const T h = N.dot(P.vertex(vp) - F.q(vq));
       if (h < -query.tolerance() * N.norm()) return false;
-      f = query.exitFace(Vec3<T>(-x0), x0);
+      f = query.exitFace(towards, x0);
     }
   }
   if (!f.valid()) return true;
