@@ -32,6 +32,17 @@ double residual(const std::vector<P2>& pts, const mink::detail::OriginLocation<d
   return std::hypot(x, y);
 }
 
+/// Locates the origin in the hull of pts (slack as given) and checks the location: found,
+/// a convex combination, rebuilding the origin within maxResidual.
+void expectLocatedWithin(const std::vector<P2>& pts, double slack, double maxResidual) {
+  std::vector<P2> work = pts, hull;
+  mink::detail::OriginLocation<double> loc;
+  ASSERT_TRUE(mink::detail::locateOrigin2(work, hull, loc, slack));
+  bool convex = false;
+  EXPECT_LE(residual(pts, loc, convex), maxResidual);
+  EXPECT_TRUE(convex) << "weights " << loc.weight[0] << " " << loc.weight[1] << " " << loc.weight[2];
+}
+
 // The fuzzer's case (fuzz/regressions/witnesses_collinear_hull_points): a facet of M
 // whose 2-D hull kept a point in the middle of the edge that the origin lies on (the
 // rounded orientation of the three was positive). The fan triangle of those three is
@@ -47,12 +58,29 @@ TEST(ContactSet, OriginOnAnEdgeWithACollinearHullPoint) {
                                {{-1.7888543819998319, 1.4605934866804433}, 6},
                                {{-0.89442719099991563, 2.5560386016907759}, 7},
                                {{0.89442719099991563, -0.73029674334022165}, 8}};
-  std::vector<P2> work = pts, hull;
-  mink::detail::OriginLocation<double> loc;
-  ASSERT_TRUE(mink::detail::locateOrigin2(work, hull, loc, 1e-12));
-  bool convex = false;
-  EXPECT_LE(residual(pts, loc, convex), 1e-14);
-  EXPECT_TRUE(convex);
+  expectLocatedWithin(pts, 1e-12, 1e-14);
+}
+
+// The fuzzer's case (fuzz/regressions/witness_off_motion_huge_penetration_tie): a facet
+// of M (a face of P against a face of Q, a 1e57 scene in units of 2^192) whose hull is
+// long and thin along the diagonal, the origin 1e-8 inside its edge 9-5. The fan
+// triangle holding it (11, 6, 5) is 0.6 long and 1.2e-8 wide: its area cancels to 1e-8
+// of its products, and its weights (0.25000000848, ...; exactly 0.25000001066, ...)
+// rebuilt a point 1.3e-9 from the origin. Iterative refinement brings it to rounding.
+TEST(ContactSet, SliverFanTriangleRebuildsTheOriginToRounding) {
+  const std::vector<P2> pts = {{{0.10857843137254901, 0.1031831381367702}, 0},
+                               {{0.10857843137254901, 0.10318315037907842}, 1},
+                               {{0.10857844361487555, 0.1031831381367702}, 2},
+                               {{-0.10857843137254901, -0.11397372429788698}, 3},
+                               {{0.10857843137254901, 0.10857843137254901}, 4},
+                               {{0.10857843137254901, 0.10857844361485723}, 5},
+                               {{0.10857844361487555, 0.10857843137254901}, 6},
+                               {{-0.10857843137254901, -0.10857843106210817}, 7},
+                               {{-0.10857843137254901, -0.10857843137254901}, 8},
+                               {{-0.10857843137254901, -0.1085784191302408}, 9},
+                               {{-0.10857841913022245, -0.10857843137254901}, 10},
+                               {{-0.32573529411764701, -0.32573529380720617}, 11}};
+  expectLocatedWithin(pts, 1e-12, 1e-16);
 }
 
 // The fuzzer's case (fuzz/regressions/witness_negative_weights_collinear_fan): a facet
@@ -73,12 +101,7 @@ TEST(ContactSet, OriginOnAnEdgeSplitIntoCollinearHullPieces) {
                                {{2.1213203435596424, 0.40824829046386307}, 9},
                                {{0, 0.81649658092772615}, 10},
                                {{0.70710678118654746, -0.40824829046386307}, 11}};
-  std::vector<P2> work = pts, hull;
-  mink::detail::OriginLocation<double> loc;
-  ASSERT_TRUE(mink::detail::locateOrigin2(work, hull, loc, 1e-13));
-  bool convex = false;
-  EXPECT_LE(residual(pts, loc, convex), 1e-14);
-  EXPECT_TRUE(convex) << "weights " << loc.weight[0] << " " << loc.weight[1] << " " << loc.weight[2];
+  expectLocatedWithin(pts, 1e-13, 1e-14);
 }
 
 // Random convex polygons (points of a circle) with extra points in the middle of their

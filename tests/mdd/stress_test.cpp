@@ -1171,7 +1171,34 @@ TEST(MddStress, FuzzerScenes) {
     const auto X = ConvexPolyhedron<double>::fromPoints(P);
     EXPECT_TRUE(mink::intersects(X, poseP, X, poseQ));
   }
-  EXPECT_EQ(fam.queries, 9);
+  {
+    // witness_off_motion_huge_penetration_tie: P = Q up to 1.4e57 (hull tolerance 0), both
+    // at (-2, -2, -2): the chord of M is symmetric, a tie. The answer's facet is a face of
+    // P against a face of Q whose 2-D points, in units of 2^192, form a sliver fan
+    // triangle 0.6 long and 1.2e-8 wide; its barycentric weights were wrong in the ninth
+    // digit and the witnesses 5.9e48 off parameter * s (4.4e-9 of the scene).
+    const std::vector<Vec3d> P = {{0x1.1212121212121p-493, -0x1.bcbcbcb212121p+189, -0x1.bcbcbcbcbcbcbp+189},
+                                  {-0x1.bcbcbcbcbcbcbp+189, -0x1.bcbcbcbcbcbcbp+189, -0x1.bcbcbcbcbcbcbp+189},
+                                  {-0x1.bcbcbcbcbcbcbp+189, -0x1.b1b00cbcbcbcbp+189, -0x1.bcbcbcbcbcbcbp+189},
+                                  {0x1.121cbcbcbcbcbp-189, 0x1.1212121212121p-493, 0x1.1212121212121p-493},
+                                  {-0x1.bcbcbcbcbb521p+189, -0x1.bcbcbcbcbcbcbp+189, -0x1.bcbcbcbcbcbcbp+189},
+                                  {-0x1.bcbcbcbcbcbcbp+189, 0x1.42121cbcbcbcbp-492, 0x1.1212121212121p-493},
+                                  {0x1.1212121212121p-493, -0x1.5b5b5b5b5b5b5p-164, -0x1.5b5b5b5b5b5b5p-164},
+                                  {-0x1.5b5b5b5b5a5b5p-164, -0x1.5b5b5b5b5b5b5p-164, 0x1.a4a4a4a47b5b5p+165},
+                                  {-0x1.5b5b5b521b54ap-164, -0x1.5b5b5b5b5b5b5p-164, -0x1.5b5b5b5b5b5b5p-164},
+                                  {-0x1.5b5b5b5b5b5b5p-164, -0x1.5b5b5b5b5b5b5p-164, -0x1.5b5a5b5b5b5b5p-164},
+                                  {-0x1.5b5b5b5b5b5b5p-164, 0x1.a4a47b5b5b5b5p+165, -0x1.5b5b54a4a4a4ap-164},
+                                  {0x1.5b5b5b5b5b5b5p-1012, 0, 0}};
+    const Mat3d I = Mat3d::Identity();
+    const Vec3d t(-2, -2, -2), s(-2, -1, -1);
+    const double L = 1.4e57;
+    const auto r = scene("P = Q of 1e57, a tie on a sliver facet", P, P, I, I, t, t, s, L, 0.0);
+    EXPECT_EQ(r.status, MddStatus::Penetrating);
+    EXPECT_LT((r.witnessP - r.witnessQ - r.parameter * s).norm(), 64 * kEpsD * L);
+    EXPECT_LT(outside(P, I, t, r.witnessP), 64 * kEpsD * L);
+    EXPECT_LT(outside(P, I, t, r.witnessQ), 64 * kEpsD * L);
+  }
+  EXPECT_EQ(fam.queries, 10);
   report({fam});
 }
 

@@ -61,6 +61,14 @@ struct OriginLocation {
   T weight[3] = {T(0), T(0), T(0)};
 };
 
+/// max(|x|, |y|) of the point the weights of `loc` make of the points q[0..count).
+template <class T>
+T combinationSize(const OriginLocation<T>& loc, const std::pair<T, T>* const* q) {
+  T x = T(0), y = T(0);
+  for (int i = 0; i < loc.count; ++i) x += loc.weight[i] * q[i]->first, y += loc.weight[i] * q[i]->second;
+  return std::max(absValue(x), absValue(y));
+}
+
 /// loc := the origin's barycentric weights in the triangle of points a, b, c (ids ia, ib,
 /// ic), unchecked: they may be negative or noise. False when the triangle has zero area.
 template <class T>
@@ -78,6 +86,25 @@ bool triangleWeights(const std::pair<T, T>& a, int ia, const std::pair<T, T>& b,
   loc.weight[0] = T(1) - wb - wc;
   loc.weight[1] = wb;
   loc.weight[2] = wc;
+  if constexpr (!ScalarTraits<T>::isExact) {
+    // A sliver (points 0.6 apart, the triangle 1.2e-8 wide: A cancels to 1e-8 of its
+    // products) has weights wrong in their ninth digit, and the point they rebuild is
+    // 1e-9 of the triangle's size off the origin (witnesses 6e48 off the motion in a 1e57
+    // scene). One step of iterative refinement: the residual r (accurate to rounding of
+    // the points' size) located in the same triangle corrects the weights; kept only if
+    // it rebuilds the origin better (a noise A, for collinear points, would not).
+    const std::pair<T, T>* abc[3] = {&a, &b, &c};
+    const T r0 = combinationSize(loc, abc);
+    if (r0 > T(0)) {
+      T rx = T(0), ry = T(0);
+      for (int i = 0; i < 3; ++i) rx += loc.weight[i] * abc[i]->first, ry += loc.weight[i] * abc[i]->second;
+      OriginLocation<T> refined = loc;
+      refined.weight[1] = wb + (-rx * (c.second - a.second) + ry * (c.first - a.first)) / A;
+      refined.weight[2] = wc + (dx * -ry - dy * -rx) / A;
+      refined.weight[0] = T(1) - refined.weight[1] - refined.weight[2];
+      if (combinationSize(refined, abc) < r0) loc = refined;
+    }
+  }
   return true;
 }
 
@@ -95,14 +122,6 @@ bool segmentProjection(const std::pair<T, T>& a, int ia, const std::pair<T, T>& 
   loc.weight[0] = T(1) - l;
   loc.weight[1] = l;
   return len2 > T(0);
-}
-
-/// max(|x|, |y|) of the point the weights of `loc` make of the points q[0..count).
-template <class T>
-T combinationSize(const OriginLocation<T>& loc, const std::pair<T, T>* const* q) {
-  T x = T(0), y = T(0);
-  for (int i = 0; i < loc.count; ++i) x += loc.weight[i] * q[i]->first, y += loc.weight[i] * q[i]->second;
-  return std::max(absValue(x), absValue(y));
 }
 
 /// loc := the origin's barycentric coordinates in the triangle of points a, b, c (with
