@@ -105,7 +105,7 @@ class MddQuery {
     if constexpr (ScalarTraits<T>::isExact) {
       tol_ = numTol_ = T(0);
     } else {
-      const T scene = P.extent() + Q.extent() + F.t().template lpNorm<1>();
+      const T scene = F.sceneSize();
       // numTol_: the rounding slack of the facet checks, always automatic; tol_: what
       // counts as touching, the caller's choice (a large touchTolerance must not make
       // the facet checks accept faces the line misses).
@@ -425,11 +425,9 @@ class MddQuery {
   /// which the line may miss by rounding).
   void nearestWitnesses(const MFace<T>& m) {
     if (facetHit(m)) return;
-    const ConvexPolyhedron<T>& P = F_.P();
-    const ConvexPolyhedron<T>& Q = F_.Q();
     // facetHit left the facet's support sets in setP / setQ: the point of their
     // difference's hull nearest the line (any slack above the scene's size accepts it).
-    hitSets(T(4) * (P.extent() + Q.extent() + F_.t().template lpNorm<1>()));
+    hitSets(T(4) * F_.sceneSize());
   }
 
   /// Does the line {t s} cross the face m itself (its own features, no tolerance: FV is

@@ -48,6 +48,15 @@ class PairFrame {
     C_.col(0) = R.col(1).cross(R.col(2));
     C_.col(1) = R.col(2).cross(R.col(0));
     C_.col(2) = R.col(0).cross(R.col(1));
+    if constexpr (!ScalarTraits<T>::isExact) {
+      scene_ = P.extent() + Q.extent() + t.template lpNorm<1>();
+      if (scene_ > T(0) && ScalarTraits<T>::isFinite(scene_)) {
+        using std::ilogb;
+        const int e = ilogb(scene_);
+        const int band = std::numeric_limits<T>::max_exponent / 16;
+        unitExp_ = (e >= -band && e <= band) ? 0 : e;
+      }
+    }
   }
 
   const ConvexPolyhedron<T>& P() const { return P_; }
@@ -86,16 +95,14 @@ class PairFrame {
   /// Tests that multiply two or three coordinates of M (the 2-D and 3-D portals) work in
   /// those units: a scene of 1e-224 gave products of 1e-448, zero in double, and every
   /// such test decided by underflow (mdd said NoContact for an overlap of 16% of it).
-  int unitScaleExponent() const {
+  int unitScaleExponent() const { return unitExp_; }
+  /// The scene's size, P.extent() + Q.extent() + |t|_1 (the rounding slacks scale with
+  /// it): made once per pair; for exact T (no slacks) computed when asked.
+  T sceneSize() const {
     if constexpr (ScalarTraits<T>::isExact) {
-      return 0;
+      return P_.extent() + Q_.extent() + t_.template lpNorm<1>();
     } else {
-      const T scene = P_.extent() + Q_.extent() + t_.template lpNorm<1>();
-      if (!(scene > T(0)) || !ScalarTraits<T>::isFinite(scene)) return 0;
-      using std::ilogb;
-      const int e = ilogb(scene);
-      const int band = std::numeric_limits<T>::max_exponent / 16;
-      return (e >= -band && e <= band) ? 0 : e;
+      return scene_;
     }
   }
   /// For a direction near the hint's but on a large shape: the hierarchy when the shape
@@ -237,6 +244,8 @@ class PairFrame {
   Mat3<T> R_, C_;
   Vec3<T> t_;
   bool useHierarchy_;
+  T scene_ = T(0);   // inexact T: sceneSize()
+  int unitExp_ = 0;  // inexact T: unitScaleExponent()
 };
 
 /// The search's objective: face f is better than g along σ for centre c when
