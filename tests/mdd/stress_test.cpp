@@ -966,6 +966,12 @@ TEST(MddStress, LinesInFacetPlanes) {
 // each against the exact reference by the rules above, plus the property that failed.
 TEST(MddStress, FuzzerScenes) {
   Family fam("fuzzer scenes (fuzz/regressions/)", kContactBound, "scene size");
+  // A line through the sliver EE facet of two edges 1.8e-11 rad from parallel: its plane
+  // is ill-conditioned in double (the edges' rounded directions tilt it by eps / 1.8e-11
+  // = 1e-5 rad), the facet (1e-10 wide) is lost, and its neighbours' planes bound the line
+  // there. The bound is a tenth of that facet's width over L (measured: 4e-12).
+  Family sliver("fuzzer: a line through an EE sliver (1.8e-11 rad)", 1e-11, "scene size");
+  Family* into = &fam;
   auto scene = [&](const std::string& label, const std::vector<Vec3d>& P, const std::vector<Vec3d>& Q,
                    const Mat3d& RP, const Mat3d& RQ, const Vec3d& tP, const Vec3d& tQ, const Vec3d& s, double L,
                    double hullTolerance = -1.0) {
@@ -978,7 +984,7 @@ TEST(MddStress, FuzzerScenes) {
     su.rotQ = RQ;
     su.transP = tP;
     const Built<double> b(su);
-    const auto r = runQueries(fam, b, {{tQ, s, label}}, L);
+    const auto r = runQueries(*into, b, {{tQ, s, label}}, L);
     return r.empty() ? mink::MddResult<double>() : r[0];
   };
   // Distance of a world point outside the placed hull of pts (0 inside), by face planes.
@@ -1198,8 +1204,33 @@ TEST(MddStress, FuzzerScenes) {
     EXPECT_LT(outside(P, I, t, r.witnessP), 64 * kEpsD * L);
     EXPECT_LT(outside(P, I, t, r.witnessQ), 64 * kEpsD * L);
   }
+  {
+    // needle_chord_facet_misses_line: P = Q, a tetrahedron two of whose vertices are 1e-10
+    // apart (hull tolerance 0); Q turned by an exact half turn, which makes P's long edge
+    // v0 v3 and Q's 1.8e-11 rad from parallel. The line touches M along 3.3e-11 of its
+    // length, at the sliver EE facet of those edges, which the face set loses to rounding
+    // (see `sliver`); the chord fallback's plane crossing was right to 1.6e-11, but mdd
+    // read the contact off that plane's own facet, 1.4 from the line: Separated at 2
+    // instead of 3, a point 0.8 off M.
+    const std::vector<Vec3d> P = {{0x1.fffffffffep-1, 0x1.fffffffffep-1, 0x1.ffffffff78p-1},
+                                  {0x1.fffffffff6p-1, 0x1.0000000031p+0, 0x1.000000005fp+0},
+                                  {0x1.000000003cp+1, -0x1.ffffffff9fp+0, 0x1.0000000069p+0},
+                                  {-0x1.fffffffffdp+0, -0x1.fffffffffep+0, -0x1.fffffffff8p+0}};
+    Mat3d RQ;
+    RQ << 0, 0, -1, 0, -1, 0, -1, 0, 0;
+    const Vec3d tP(1, 1, 1), tQ(0.9999999998972271, 0.9999999998972271, -2.0000000001027729), s(-2, -2, 1);
+    const double L = 4.0;
+    into = &sliver;
+    const auto r = scene("needle tetrahedra, the line touching M at tiny facets", P, P, Mat3d::Identity(), RQ, tP, tQ,
+                         s, L, 0.0);
+    EXPECT_EQ(r.status, MddStatus::Separated);
+    // The facets the line meets are 1e-10 across and lost to rounding: the witnesses are
+    // the nearest point of the facets kept, within that of the motion.
+    EXPECT_LT((r.witnessP - r.witnessQ - r.parameter * s).norm(), 1e-9);
+  }
   EXPECT_EQ(fam.queries, 10);
-  report({fam});
+  EXPECT_EQ(sliver.queries, 1);
+  report({fam, sliver});
 }
 
 // =======================================================================================

@@ -544,7 +544,10 @@ class MddQuery {
   /// own plane (a basis orthogonal to its normal N), not by projection along s, so that
   /// a facet met at a grazing angle is no sliver here. False (witnesses unchanged) if Y
   /// lies farther than the facet checks' slack from that hull.
-  bool witnessesAt(const Vec3<T>& Y, const Vec3<T>& N) {
+  bool witnessesAt(const Vec3<T>& Y, const Vec3<T>& N) { return witnessesAt(Y, N, numTol_); }
+  /// As above with the given slack (a length; any slack above the scene's size takes the
+  /// facet's point nearest Y in its plane).
+  bool witnessesAt(const Vec3<T>& Y, const Vec3<T>& N, const T& slack) {
     const ConvexPolyhedron<T>& P = F_.P();
     auto basis = orthogonalBasis(N);
     Vec3<T> a = basis.first, b = basis.second;
@@ -561,8 +564,32 @@ class MddQuery {
         cache_.points2.push_back({{y.dot(a), y.dot(b)}, static_cast<int>(i * cache_.setQ.size() + j)});
       }
     OriginLocation<T> loc;
-    if (!locateOrigin2(cache_.points2, cache_.hull2, loc, slackUnits(numTol_))) return false;
+    if (!locateOrigin2(cache_.points2, cache_.hull2, loc, slackUnits(slack))) return false;
     setWitnesses(loc);
+    return true;
+  }
+
+  /// Witnesses for a contact point X (frame of P) that the chord's face does not reach:
+  /// of the facets of all faces of M that support their normals (as chord() takes them),
+  /// the point nearest X, each facet's located in its own plane. Replaces the witnesses,
+  /// and leaves that facet's support sets in setP / setQ, only if it is nearer X than
+  /// `best` (updated). A needle (a tetrahedron with an edge of 1e-10) loses the tiny
+  /// facets of M around its short edge to rounding; the line met M there, the chord's
+  /// plane bounded it right (to 1e-11), but that plane's own facet ended 1.4 from it.
+  bool nearestFacetPoint(const Vec3<T>& X, T& best) {
+    MFace<T> nearest;
+    Vec3<T> bestP = wP_, bestQ = wQ_;
+    forEachFace([&](const MFace<T>& m) {
+      const T n = norm(m.N);
+      if (!(n > T(0)) || !(absValue(T(m.N.dot(X) - m.k)) < best * n)) return;  // its plane is farther
+      if (!facetSets(m) || !witnessesAt(X, m.N, T(4) * F_.sceneSize())) return;
+      const T dist = norm(Vec3<T>(wP_ - wQ_ - X));
+      if (dist < best) best = dist, nearest = m, bestP = wP_, bestQ = wQ_;
+    });
+    wP_ = bestP;
+    wQ_ = bestQ;
+    if (!nearest.valid()) return false;
+    facetSets(nearest);
     return true;
   }
 
@@ -889,9 +916,24 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
         record(*answer);
         // The witnesses are the facet's point nearest the line; at a grazing angle the
         // contact's place along the line is ill-conditioned, so it is read off them.
+        // Only where that facet reaches the line, to the slack: a facet it misses (by
+        // 1.4 on a needle's M, the line meeting facets lost to rounding) says nothing
+        // about the contact; the plane's crossing stands, the witnesses are the nearest
+        // point of any facet to it.
         const Vec3<T> d = query.witnessP() - query.witnessQ();
         const T ss = sl.squaredNorm();
-        if (ss > T(0)) tAns = d.dot(sl) / ss;
+        if (ss > T(0)) {
+          const T tW = d.dot(sl) / ss;
+          if (Vec3<T>(d - tW * sl).norm() <= query.slack()) {
+            tAns = tW;
+          } else {
+            T best = Vec3<T>(d - tAns * sl).norm();
+            if (query.nearestFacetPoint(Vec3<T>(tAns * sl), best)) {
+              res.witnessP = toWorld(query.witnessP());
+              res.witnessQ = toWorld(query.witnessQ());
+            }
+          }
+        }
         return finish(tAns);
       }
     }
