@@ -573,7 +573,8 @@ class MddQuery {
   /// of the facets of all faces of M that support their normals (as chord() takes them),
   /// the point nearest X, each facet's located in its own plane. Replaces the witnesses,
   /// and leaves that facet's support sets in setP / setQ, only if it is nearer X than
-  /// `best` (updated). A needle (a tetrahedron with an edge of 1e-10) loses the tiny
+  /// `best` (updated; lengths in the units of slackUnits, so that a scene of 1e200 does
+  /// not overflow them). A needle (a tetrahedron with an edge of 1e-10) loses the tiny
   /// facets of M around its short edge to rounding; the line met M there, the chord's
   /// plane bounded it right (to 1e-11), but that plane's own facet ended 1.4 from it.
   bool nearestFacetPoint(const Vec3<T>& X, T& best) {
@@ -581,9 +582,9 @@ class MddQuery {
     Vec3<T> bestP = wP_, bestQ = wQ_;
     forEachFace([&](const MFace<T>& m) {
       const T n = norm(m.N);
-      if (!(n > T(0)) || !(absValue(T(m.N.dot(X) - m.k)) < best * n)) return;  // its plane is farther
+      if (!(n > T(0)) || !(slackUnits(T(absValue(T(m.N.dot(X) - m.k)) / n)) < best)) return;  // its plane is farther
       if (!facetSets(m) || !witnessesAt(X, m.N, T(4) * F_.sceneSize())) return;
-      const T dist = norm(Vec3<T>(wP_ - wQ_ - X));
+      const T dist = norm(inUnits(Vec3<T>(wP_ - wQ_ - X)));
       if (dist < best) best = dist, nearest = m, bestP = wP_, bestQ = wQ_;
     });
     wP_ = bestP;
@@ -924,10 +925,10 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
         const T ss = sl.squaredNorm();
         if (ss > T(0)) {
           const T tW = d.dot(sl) / ss;
-          if (Vec3<T>(d - tW * sl).norm() <= query.slack()) {
+          if (query.inUnits(Vec3<T>(d - tW * sl)).norm() <= query.slackUnits(query.slack())) {
             tAns = tW;
           } else {
-            T best = Vec3<T>(d - tAns * sl).norm();
+            T best = query.inUnits(Vec3<T>(d - tAns * sl)).norm();
             if (query.nearestFacetPoint(Vec3<T>(tAns * sl), best)) {
               res.witnessP = toWorld(query.witnessP());
               res.witnessQ = toWorld(query.witnessQ());
