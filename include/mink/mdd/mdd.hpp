@@ -916,16 +916,19 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
         query.nearestWitnesses(*answer);
         record(*answer);
         // The witnesses are the facet's point nearest the line; at a grazing angle the
-        // contact's place along the line is ill-conditioned, so it is read off them.
-        // Only where that facet reaches the line, to the slack: a facet it misses (by
-        // 1.4 on a needle's M, the line meeting facets lost to rounding) says nothing
-        // about the contact; the plane's crossing stands, the witnesses are the nearest
-        // point of any facet to it.
+        // contact's place along the line is ill-conditioned, so it is read off them (a
+        // face met at a sine of 5e-12: 0.92 by its plane, 0.50 by its facet, 2.6e-12 from
+        // the line). A face met at a larger angle has an accurate crossing: read off its
+        // facet only where that reaches the line, to the slack. One it misses (by 1.4 on
+        // a needle's M, the line meeting facets lost to rounding) says nothing about the
+        // contact; the plane's crossing stands, the witnesses are the nearest point of any
+        // facet to it.
         const Vec3<T> d = query.witnessP() - query.witnessQ();
         const T ss = sl.squaredNorm();
         if (ss > T(0)) {
           const T tW = d.dot(sl) / ss;
-          if (query.inUnits(Vec3<T>(d - tW * sl)).norm() <= query.slackUnits(query.slack())) {
+          if (!query.wellConditioned(*answer) ||
+              query.inUnits(Vec3<T>(d - tW * sl)).norm() <= query.slackUnits(query.slack())) {
             tAns = tW;
           } else {
             T best = query.inUnits(Vec3<T>(d - tAns * sl)).norm();
