@@ -61,12 +61,19 @@ struct OriginLocation {
   T weight[3] = {T(0), T(0), T(0)};
 };
 
-/// max(|x|, |y|) of the point the weights of `loc` make of the points q[0..count).
+/// The point the weights of `loc` make of the points q[0..count).
 template <class T>
-T combinationSize(const OriginLocation<T>& loc, const std::pair<T, T>* const* q) {
+std::pair<T, T> combinationPoint(const OriginLocation<T>& loc, const std::pair<T, T>* const* q) {
   T x = T(0), y = T(0);
   for (int i = 0; i < loc.count; ++i) x += loc.weight[i] * q[i]->first, y += loc.weight[i] * q[i]->second;
-  return std::max(absValue(x), absValue(y));
+  return {x, y};
+}
+
+/// max(|x|, |y|) of combinationPoint(loc, q).
+template <class T>
+T combinationSize(const OriginLocation<T>& loc, const std::pair<T, T>* const* q) {
+  const std::pair<T, T> p = combinationPoint(loc, q);
+  return std::max(absValue(p.first), absValue(p.second));
 }
 
 /// loc := the origin's barycentric weights in the triangle of points a, b, c (ids ia, ib,
@@ -94,10 +101,10 @@ bool triangleWeights(const std::pair<T, T>& a, int ia, const std::pair<T, T>& b,
     // the points' size) located in the same triangle corrects the weights; kept only if
     // it rebuilds the origin better (a noise A, for collinear points, would not).
     const std::pair<T, T>* abc[3] = {&a, &b, &c};
-    const T r0 = combinationSize(loc, abc);
+    const std::pair<T, T> res = combinationPoint(loc, abc);
+    const T rx = res.first, ry = res.second;
+    const T r0 = std::max(absValue(rx), absValue(ry));
     if (r0 > T(0)) {
-      T rx = T(0), ry = T(0);
-      for (int i = 0; i < 3; ++i) rx += loc.weight[i] * abc[i]->first, ry += loc.weight[i] * abc[i]->second;
       OriginLocation<T> refined = loc;
       refined.weight[1] = wb + (-rx * (c.second - a.second) + ry * (c.first - a.first)) / A;
       refined.weight[2] = wc + (dx * -ry - dy * -rx) / A;
