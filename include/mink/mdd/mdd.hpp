@@ -486,6 +486,12 @@ class MddQuery {
   /// differences hold the line wherever it crosses M, and its plane, 1.04 off M, was
   /// accepted (and cut the chord of M to nothing).
   bool facetSets(const MFace<T>& m) {
+    T eps = T(0);
+    if constexpr (!ScalarTraits<T>::isExact) eps = numTol_ * m.N.norm();
+    return facetSets(m, eps);
+  }
+  /// The same with the support sets' slack `eps` (units of N·x).
+  bool facetSets(const MFace<T>& m, const T& eps) {
     const ConvexPolyhedron<T>& P = F_.P();
     const ConvexPolyhedron<T>& Q = F_.Q();
     int vp = 0, vq = 0;
@@ -506,22 +512,42 @@ class MddQuery {
         return false;
     }
     const Vec3<T>& N = m.N;
-    T eps = T(0);
-    if constexpr (!ScalarTraits<T>::isExact) eps = numTol_ * N.norm();
     const bool okP = supportSet(P, vp, [&](int v) { return T(N.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
     const bool okQ = supportSet(Q, vq, [&](int v) { return T(-N.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
     return okP && okQ;
   }
 
+  /// points2 := the vertices of the hull of setP − setQ − Y in the coordinates
+  /// (y·a, y·b), in cyclic order, with ids i·|setQ| + j (setWitnesses reads them): only
+  /// the at most |setP| + |setQ| pairs that DifferencePolygon names, each difference
+  /// then formed from the vertices themselves. The two sets enter relative to their first
+  /// points, so that coordinates far from the origin do not round their shapes.
+  void facetPolygon(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& Y) {
+    const ConvexPolyhedron<T>& P = F_.P();
+    DifferencePolygon<T>& D = cache_.facet;
+    D.a.clear();
+    D.b.clear();
+    const Vec3<T> p0 = P.vertex(cache_.setP[0]), q0 = F_.q(cache_.setQ[0]);
+    for (int v : cache_.setP) {
+      const Vec3<T> y = P.vertex(v) - p0;
+      D.a.push_back({y.dot(a), y.dot(b)});
+    }
+    for (int v : cache_.setQ) {
+      const Vec3<T> y = F_.q(v) - q0;
+      D.b.push_back({y.dot(a), y.dot(b)});
+    }
+    D.compute();
+    cache_.points2.clear();
+    const int nq = static_cast<int>(cache_.setQ.size());
+    for (const auto& ij : D.pairs) {
+      const Vec3<T> y = P.vertex(cache_.setP[ij.first]) - F_.q(cache_.setQ[ij.second]) - Y;
+      cache_.points2.push_back({{y.dot(a), y.dot(b)}, ij.first * nq + ij.second});
+    }
+  }
+
   /// Does the line cross (within `slack`) the hull of setP − setQ? Fills the witnesses.
   bool hitSets(const T& slack) {
-    const ConvexPolyhedron<T>& P = F_.P();
-    cache_.points2.clear();
-    for (std::size_t i = 0; i < cache_.setP.size(); ++i)
-      for (std::size_t j = 0; j < cache_.setQ.size(); ++j) {
-        const Vec3<T> y = P.vertex(cache_.setP[i]) - F_.q(cache_.setQ[j]);
-        cache_.points2.push_back({{y.dot(u1_), y.dot(u2_)}, static_cast<int>(i * cache_.setQ.size() + j)});
-      }
+    facetPolygon(u1_, u2_, Vec3<T>::Zero());
     OriginLocation<T> loc;
     if (!locateOrigin2(cache_.points2, cache_.hull2, loc, slackUnits(slack))) return false;
     setWitnesses(loc);
@@ -548,7 +574,6 @@ class MddQuery {
   /// As above with the given slack (a length; any slack above the scene's size takes the
   /// facet's point nearest Y in its plane).
   bool witnessesAt(const Vec3<T>& Y, const Vec3<T>& N, const T& slack) {
-    const ConvexPolyhedron<T>& P = F_.P();
     auto basis = orthogonalBasis(N);
     Vec3<T> a = basis.first, b = basis.second;
     if constexpr (!ScalarTraits<T>::isExact) {
@@ -557,12 +582,7 @@ class MddQuery {
       a = inUnits(a);
       b = inUnits(b);
     }
-    cache_.points2.clear();
-    for (std::size_t i = 0; i < cache_.setP.size(); ++i)
-      for (std::size_t j = 0; j < cache_.setQ.size(); ++j) {
-        const Vec3<T> y = P.vertex(cache_.setP[i]) - F_.q(cache_.setQ[j]) - Y;
-        cache_.points2.push_back({{y.dot(a), y.dot(b)}, static_cast<int>(i * cache_.setQ.size() + j)});
-      }
+    facetPolygon(a, b, Y);
     OriginLocation<T> loc;
     if (!locateOrigin2(cache_.points2, cache_.hull2, loc, slackUnits(slack))) return false;
     setWitnesses(loc);
@@ -620,15 +640,11 @@ class MddQuery {
     if constexpr (!ScalarTraits<T>::isExact) eps = numTol_ * w.norm();
     supportSet(P, vp, [&](int v) { return T(w.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
     supportSet(Q, vq, [&](int v) { return T(-w.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
-    // In the plane: coordinate a along s, b along e = w × s; the line is b == 0.
-    const Vec3<T> e = w.cross(s_);
-    cache_.ab.clear();
-    for (int ip : cache_.setP)
-      for (int iq : cache_.setQ) {
-        // In 2^e units (see u1_): the crossings below multiply two coordinates.
-        const Vec3<T> y = inUnits(Vec3<T>(P.vertex(ip) - F_.q(iq)));
-        cache_.ab.push_back({y.dot(s_), y.dot(e)});
-      }
+    // In the plane: coordinate a along s, b along e = w × s; the line is b == 0. In 2^e
+    // units (see u1_): the crossings below multiply two coordinates. The facet's polygon
+    // (its vertices in cyclic order) meets the line where its edges cross b == 0.
+    facetPolygon(inUnits(s_), inUnits(Vec3<T>(w.cross(s_))), Vec3<T>::Zero());
+    const auto& ab = cache_.points2;
     bool any = false;
     T amin = T(0), amax = T(0);
     auto take = [&](const T& a) {
@@ -636,13 +652,12 @@ class MddQuery {
       if (!any || a > amax) amax = a;
       any = true;
     };
-    for (std::size_t i = 0; i < cache_.ab.size(); ++i) {
-      if (cache_.ab[i].second == T(0)) take(cache_.ab[i].first);
-      for (std::size_t j = 0; j < cache_.ab.size(); ++j) {
-        const T bi = cache_.ab[i].second, bj = cache_.ab[j].second;
-        if (bi < T(0) && bj > T(0))
-          take((cache_.ab[i].first * bj - cache_.ab[j].first * bi) / (bj - bi));
-      }
+    for (std::size_t i = 0; i < ab.size(); ++i) {
+      const auto& pi = ab[i].first;
+      const auto& pj = ab[(i + 1) % ab.size()].first;
+      if (pi.second == T(0)) take(pi.first);
+      if ((pi.second < T(0) && pj.second > T(0)) || (pi.second > T(0) && pj.second < T(0)))
+        take((pi.first * pj.second - pj.first * pi.second) / (pj.second - pi.second));
     }
     if (!any) return false;
     const T ss = s_.squaredNorm();

@@ -9,6 +9,7 @@
 
 #include "mink/core/scalar_traits.hpp"
 #include "mink/core/types.hpp"
+#include "mink/mdd/detail/difference_polygon.hpp"
 
 namespace mink {
 
@@ -82,8 +83,10 @@ struct MddResult {
   int featureQ = -1;  ///< vertex / face / edge id on Q, per faceType
   /// Faces of M evaluated, per phase (summed over the d_max and d_min searches).
   int visitedFV = 0, visitedVF = 0, visitedEE = 0;
-  /// True when the local search's answer failed its check (the hit point must lie in the
-  /// face found) and the exhaustive search over all FV, VF and EE faces answered instead.
+  /// True when a scan quadratic in the sizes ran: the local search's answer failed its
+  /// check (the hit point must lie in the face found) and the exhaustive search over all
+  /// FV, VF and EE faces answered instead, or the chord of M (the line clipped by every
+  /// face plane of M) did.
   bool usedFallback = false;
   /// Support queries on M made by the exit-portal estimates (mdd/exit_portal.hpp), the
   /// starting points of the searches; 0 when a cached face answered.
@@ -186,7 +189,7 @@ struct MddCache {
   // Facet-check and grazing buffers.
   std::vector<int> setP, setQ;
   std::vector<std::pair<std::pair<T, T>, int>> points2, hull2;
-  std::vector<std::pair<T, T>> ab;
+  detail::DifferencePolygon<T> facet;
 };
 
 }  // namespace mink

@@ -1,0 +1,117 @@
+// tests/mdd/difference_polygon_test.cpp — mdd/detail/difference_polygon.hpp: the vertices of
+// conv(A) ⊕ −conv(B) from the two hulls' merge. Reference: CGAL's exact convex hull
+// (convex_hull_2 on a kernel over CGAL::Gmpq) of all |A|·|B| differences, in exact rationals — the
+// pairs named must be exactly its vertices, once each, in counter-clockwise order.
+#include "mink/mdd/detail/difference_polygon.hpp"
+
+#include <gtest/gtest.h>
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/convex_hull_2.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using K = CGAL::Simple_cartesian<CGAL::Gmpq>;  // exact: every operation in rationals
+using Point = K::Point_2;
+
+/// Checks D.pairs against the exact hull of all differences a_i − b_j. `label` names the case.
+template <class T>
+void expectHullVertices(const mink::detail::DifferencePolygon<T>& D, const std::string& label) {
+  SCOPED_TRACE(label);
+  auto diff = [&](int i, int j) {
+    return Point(K::FT(double(D.a[i].first)) - K::FT(double(D.b[j].first)),
+                 K::FT(double(D.a[i].second)) - K::FT(double(D.b[j].second)));
+  };
+  std::vector<Point> all, hull;
+  for (std::size_t i = 0; i < D.a.size(); ++i)
+    for (std::size_t j = 0; j < D.b.size(); ++j) all.push_back(diff(int(i), int(j)));
+  CGAL::convex_hull_2(all.begin(), all.end(), std::back_inserter(hull));  // CCW, no collinear points
+  std::vector<Point> got;
+  for (const auto& ij : D.pairs) got.push_back(diff(ij.first, ij.second));
+  ASSERT_EQ(got.size(), hull.size());
+  if (hull.size() == 1) {
+    EXPECT_EQ(got[0], hull[0]);
+    return;
+  }
+  // The same cyclic sequence: find hull[0] in got, then walk both.
+  std::size_t start = got.size();
+  for (std::size_t k = 0; k < got.size(); ++k)
+    if (got[k] == hull[0]) start = k;
+  ASSERT_LT(start, got.size());
+  for (std::size_t k = 0; k < hull.size(); ++k) EXPECT_EQ(got[(start + k) % got.size()], hull[k]) << "vertex " << k;
+}
+
+TEST(DifferencePolygon, RandomIntegerSetsMatchTheExactHullOfAllDifferences) {
+  std::mt19937 rng(16);
+  for (int trial = 0; trial < 3000; ++trial) {
+    mink::detail::DifferencePolygon<double> D;
+    const int m = 1 + int(rng() % 9), n = 1 + int(rng() % 9);
+    // Small grids: collinear points, duplicates and parallel edges everywhere.
+    std::uniform_int_distribution<int> u(-3, 3);
+    for (int i = 0; i < m; ++i) D.a.push_back({double(u(rng)), double(u(rng))});
+    for (int j = 0; j < n; ++j) D.b.push_back({double(u(rng)), double(u(rng))});
+    D.compute();
+    expectHullVertices(D, "trial " + std::to_string(trial));
+  }
+}
+
+TEST(DifferencePolygon, RegularPolygonsAndDegenerateSets) {
+  const double pi = 3.14159265358979323846;
+  for (int m : {1, 2, 3, 7, 64, 257}) {
+    for (int n : {1, 2, 4, 64, 256}) {
+      mink::detail::DifferencePolygon<double> D;
+      for (int i = 0; i < m; ++i) D.a.push_back({2 * std::cos(2 * pi * i / m), 2 * std::sin(2 * pi * i / m)});
+      for (int j = 0; j < n; ++j) D.b.push_back({std::cos(2 * pi * j / n + 0.1), std::sin(2 * pi * j / n + 0.1)});
+      D.compute();
+      EXPECT_LE(D.pairs.size(), std::size_t(m + n));
+      expectHullVertices(D, "m " + std::to_string(m) + " n " + std::to_string(n));
+    }
+  }
+  // Collinear sets (segments), and a segment against a point set on one line.
+  mink::detail::DifferencePolygon<double> D;
+  D.a = {{0, 0}, {1, 1}, {3, 3}, {2, 2}};
+  D.b = {{0, 1}, {0, -2}, {0, 0}};
+  D.compute();
+  expectHullVertices(D, "two segments");
+  D.b = {{5, 5}, {-1, -1}};
+  D.compute();
+  expectHullVertices(D, "collinear segments");
+}
+
+TEST(DifferencePolygon, ExactRationals) {
+  std::mt19937 rng(17);
+  for (int trial = 0; trial < 200; ++trial) {
+    mink::detail::DifferencePolygon<CGAL::Gmpq> D;
+    std::uniform_int_distribution<int> u(-20, 20);
+    const int m = 1 + int(rng() % 12), n = 1 + int(rng() % 12);
+    for (int i = 0; i < m; ++i) D.a.push_back({CGAL::Gmpq(u(rng), 7), CGAL::Gmpq(u(rng), 3)});
+    for (int j = 0; j < n; ++j) D.b.push_back({CGAL::Gmpq(u(rng), 5), CGAL::Gmpq(u(rng), 11)});
+    D.compute();
+    // The reference converts through double: these rationals are not doubles, so compare
+    // in exact arithmetic directly here.
+    std::vector<Point> all, hull;
+    auto diff = [&](int i, int j) {
+      return Point(K::FT(D.a[i].first - D.b[j].first), K::FT(D.a[i].second - D.b[j].second));
+    };
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < n; ++j) all.push_back(diff(i, j));
+    CGAL::convex_hull_2(all.begin(), all.end(), std::back_inserter(hull));
+    ASSERT_EQ(D.pairs.size(), hull.size()) << "trial " << trial;
+    std::set<std::pair<double, double>> want, got;
+    for (const auto& p : hull) want.insert({CGAL::to_double(p.x()), CGAL::to_double(p.y())});
+    for (const auto& ij : D.pairs) {
+      const Point p = diff(ij.first, ij.second);
+      got.insert({CGAL::to_double(p.x()), CGAL::to_double(p.y())});
+    }
+    EXPECT_EQ(got, want) << "trial " << trial;
+  }
+}
+
+}  // namespace
