@@ -41,11 +41,14 @@ detail::MFace<T> searchFV(const detail::PairFrame<T>& F, const detail::RayObject
   ++visited;
   for (;;) {
     detail::MFace<T> best;
+    // The faces around the current one in cyclic order: each support query warm-starts
+    // from the last one's answer, a neighbour of it. From cur.b every time, the faces
+    // around an n-gon cap cost n steps each (n² for the ring).
+    int h = cur.b;
     for (int v : P.faceVertices(cur.a)) {
       for (int g : P.vertexFaces(v)) {
         if (!marks.mark(g)) continue;
         if (!budget.take()) return cur;
-        int h = cur.b;
         const detail::MFace<T> f = F.fv(g, h);
         ++visited;
         if (obj.better(f, best)) best = f;
@@ -67,11 +70,11 @@ detail::MFace<T> searchVF(const detail::PairFrame<T>& F, const detail::RayObject
   ++visited;
   for (;;) {
     detail::MFace<T> best;
+    int h = cur.a;  // chained, as in searchFV
     for (int v : Q.faceVertices(cur.b)) {
       for (int g : Q.vertexFaces(v)) {
         if (!marks.mark(g)) continue;
         if (!budget.take()) return cur;
-        int h = cur.a;
         const detail::MFace<T> f = F.vf(g, h);
         ++visited;
         if (obj.better(f, best)) best = f;
