@@ -76,6 +76,13 @@ constexpr long long kMddPortalFactor = 2;
 /// costs time, never correctness. Unit: support queries on M. Safe range: >= 4.
 constexpr int kMddExitPortalSteps = 48;
 
+/// MDD: at the exit-portal estimate's support vertices, the EE faces tried first (before
+/// any search) pair this many edges at each vertex: those whose Gauss arcs pass nearest
+/// the estimate's normal. All deg(P) x deg(Q) pairs were tried before, a million at the
+/// apexes of two 1024-gon cones. Only the start of the searches depends on it. Unit:
+/// edges per vertex. Safe range: 1 .. 16 (vertices of degree up to it try every pair).
+constexpr int kMddPortalEdgeCandidates = 6;
+
 /// MDD, inexact scalars: an edge pair of P and Q whose directions make a sine below this
 /// many eps is treated as parallel (no EE face): its cross product is rounding noise.
 /// Unit: multiples of eps. Safe range: 4 .. 1e4.

@@ -258,14 +258,12 @@ class MddQuery {
     res_.visitedFV += 1;
     res_.visitedVF += 1;
     const MFace<T> best = obj.better(vf, fv) ? vf : fv;
-    if (obj.num(best) > T(0) && wellConditioned(best) && faceHit(best)) {
+    if (obj.num(best) > T(0) && certifies(best)) {
       hit = best;
       return true;
     }
-    cache_.edgesP.clear();
-    cache_.edgesQ.clear();
-    edgesAround(F_.P(), est.vertexP, cache_.edgesP);
-    edgesAround(F_.Q(), est.vertexQ, cache_.edgesQ);
+    nearestArcs(F_.P(), est.vertexP, unitOrder(est.normal), cache_.edgesP);
+    nearestArcs(F_.Q(), est.vertexQ, unitOrder(Vec3<T>(F_.R().transpose() * est.normal)), cache_.edgesQ);
     MFace<T> bestEE;
     for (int ep : cache_.edgesP)
       for (int eq : cache_.edgesQ) {
@@ -275,9 +273,45 @@ class MddQuery {
         ++res_.visitedEE;
         if (obj.better(m, bestEE)) bestEE = m;
       }
-    if (obj.num(bestEE) > T(0) && obj.better(bestEE, best) && wellConditioned(bestEE) && faceHit(bestEE))
+    if (obj.num(bestEE) > T(0) && obj.better(bestEE, best) && certifies(bestEE))
       hit = bestEE;
     return true;
+  }
+
+  /// out := the edges of X at vertex v whose Gauss arcs pass nearest the direction n (X's
+  /// frame), at most defaults::kMddPortalEdgeCandidates of them, in O(degree): an arc
+  /// lies on the great circle orthogonal to its edge d, at the angle whose sine is
+  /// |n·d| / (|n| |d|) from n, compared squared and cross-multiplied. An EE face whose
+  /// normal the estimate n approximates pairs two such arcs crossing near n.
+  static void nearestArcs(const ConvexPolyhedron<T>& X, int v, const Vec3<T>& n, std::vector<int>& out) {
+    constexpr int K = defaults::kMddPortalEdgeCandidates;
+    out.clear();
+    T num[K], den[K];
+    for (int h : X.vertexHalfEdges(v)) {
+      const int e = X.heEdge(h);
+      const auto ends = X.edgeVertices(e);
+      // At unit order (exactly scaled; the ratio is scale-free): edges of a 2^-300 shape
+      // would square to 2^-600 and their products underflow.
+      const Vec3<T> d = unitOrder(Vec3<T>(X.vertex(ends.second) - X.vertex(ends.first)));
+      const T a = n.dot(d);
+      const T na = a * a, da = d.squaredNorm();
+      // Insertion into the K nearest so far (na / da smallest), kept sorted.
+      int k = static_cast<int>(out.size());
+      if (k == K) {
+        if (!(na * den[K - 1] < num[K - 1] * da)) continue;
+        --k;
+      } else {
+        out.push_back(e);
+      }
+      for (; k > 0 && na * den[k - 1] < num[k - 1] * da; --k) {
+        out[k] = out[k - 1];
+        num[k] = num[k - 1];
+        den[k] = den[k - 1];
+      }
+      out[k] = e;
+      num[k] = na;
+      den[k] = da;
+    }
   }
 
   /// Every FV, VF and EE face of M (each facet of M is one of them: its support sets are
@@ -428,6 +462,17 @@ class MddQuery {
     // facetHit left the facet's support sets in setP / setQ: the point of their
     // difference's hull nearest the line (any slack above the scene's size accepts it).
     hitSets(T(4) * F_.sceneSize());
+  }
+
+  /// May face m be accepted without a search? It is a supporting plane of M by
+  /// construction; it must be met at a well-conditioned angle and the line must cross
+  /// its own polygon (faceHit) or, failing that, the hull of its facet's support sets
+  /// (the vertices whose N·x ties the face's exactly in T) with no slack: a span (the cap of an n-gon prism against another, a box face) is
+  /// crossed away from the one face that names it, and without this every such query
+  /// ran the searches over the n faces around the cap. Fills the witnesses.
+  bool certifies(const MFace<T>& m) {
+    if (!wellConditioned(m)) return false;
+    return faceHit(m) || (facetSets(m, T(0)) && hitSets(T(0)));
   }
 
   /// Does the line {t s} cross the face m itself (its own features, no tolerance: FV is
@@ -863,7 +908,7 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
       const T ns = m.N.dot(sl);
       if (ns == T(0) || (ns > T(0) ? hi.valid() : lo.valid())) continue;
       (m.type == MddFaceType::FV ? res.visitedFV : m.type == MddFaceType::VF ? res.visitedVF : res.visitedEE) += 1;
-      if (!query.wellConditioned(m) || !query.faceHit(m)) continue;
+      if (!query.certifies(m)) continue;
       if (query.lineInPlane(m)) {
         lo = hi = detail::MFace<T>();  // a grazing line: the cold path decides
         break;
@@ -883,7 +928,7 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
       res.status = MddStatus::Penetrating;
     }
     if (answer) {
-      query.faceHit(*answer);  // its witnesses
+      query.certifies(*answer);  // its witnesses
       res.faceType = answer->type;
       res.featureP = answer->a;
       res.featureQ = answer->b;
@@ -914,6 +959,7 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
   auto fromChord = [&]() {
     if constexpr (!ScalarTraits<T>::isExact) {
       if (query.exhaustiveAllowed() && (query.checkFailed() || options.maxVisits < 0)) {
+        res.usedFallback = true;  // the chord visits every edge pair
         detail::MFace<T> lo, hi;
         T tlo = T(0), thi = T(0);
         if (!query.chord(tlo, thi, lo, hi)) return noContact();
