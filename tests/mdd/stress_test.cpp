@@ -51,6 +51,7 @@
 
 #include "support/exact_placement.hpp"
 #include "support/mdd_reference.hpp"
+#include "support/degenerate_contacts.hpp"
 #include "support/paper_shapes.hpp"
 
 namespace {
@@ -1388,6 +1389,32 @@ TEST(MddStress, FloatRoundedEllipsoidInDouble) {
     std::vector<Query<double>> dq;
     for (const auto& q : castQueries<float>(qs)) dq.push_back({q.tQ.cast<double>(), q.s.cast<double>(), q.label});
     runQueries(fam, b, dq, kR);
+  }
+  report({fam});
+}
+
+// The degenerate contacts of the worst-case benchmark (tests/support/degenerate_contacts.hpp:
+// n-gon prisms resting face to face, caps overlapping, cylinders touching along a line,
+// cones apex to apex, axis-aligned boxes) and their generic twins, at small n: the facet of
+// M they meet is a large span (two n-gon caps), found in linear time from the two polygons.
+TEST(MddStress, DegenerateContacts) {
+  Family fam("degenerate contacts (resting, caps, line, apexes, boxes)", kRotationBound, "shape size 2");
+  for (const std::string& family : mink_test::degenerateFamilies()) {
+    for (int n : {5, 12}) {
+      for (bool generic : {false, true}) {
+        const mink_test::ContactScene sc = mink_test::degenerateScene(family, n, generic);
+        Placement<double> su;
+        su.label = family + " n " + std::to_string(n) + (generic ? " generic" : " degenerate");
+        su.ptsP = sc.P;
+        su.ptsQ = sc.Q;
+        su.rotQ = sc.rotQ;
+        const Built<double> b(su);
+        std::vector<Query<double>> qs;
+        for (const Vec3d& s : sc.dirs) qs.push_back({sc.tQ, s, "s"});
+        for (const auto& r : runQueries(fam, b, qs, 2.0)) EXPECT_FALSE(r.usedFallback) << su.label;
+      }
+      if (family == "boxes-aligned") break;
+    }
   }
   report({fam});
 }
