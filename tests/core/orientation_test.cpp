@@ -1,8 +1,11 @@
 // Tests of mink/core/orientation.hpp: orient3d(a, b, c, d) is the exact sign of
-// det[b - a, c - a, d - a] of the given numbers. Reference: the same determinant in
-// exact rational arithmetic (CGAL::Gmpq) from the exact values of the inputs.
+// det[b - a, c - a, d - a] of the given numbers, orient2d(a, b, c) that of
+// (b - a) x (c - a) in the plane. References: the 3-D determinant in exact rational
+// arithmetic (CGAL::Gmpq) from the exact values of the inputs; for orient2d, CGAL's own
+// exact predicate CGAL::orientation on Simple_cartesian<Gmpq> points.
 // Inputs are chosen to reach the exact fallback: points on (or within a few ulps of) a
-// plane through three others, collinear and coincident points, at extreme scales.
+// plane through three others (a line through two others), collinear and coincident
+// points, at extreme scales.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -15,6 +18,7 @@
 #include <type_traits>
 
 #include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include "mink/core/orientation.hpp"
 
@@ -321,6 +325,199 @@ TEST(Orient3dExact, SignConvention) {
   EXPECT_EQ(mink::orient3d(a, b, c, Vec3<double>(0.3, 0.3, 1e-30)), 1);
   EXPECT_EQ(mink::orient3d(a, b, c, Vec3<double>(0.3, 0.3, -2.0)), -1);
   EXPECT_EQ(mink::orient3d(a, b, c, Vec3<double>(5.0, -7.0, 0.0)), 0);
+}
+
+// ---------------------------------------------------------------------------------------
+// orient2d
+
+using K2 = CGAL::Simple_cartesian<Q>;
+
+template <class T>
+int cgalOrientation(const T& ax, const T& ay, const T& bx, const T& by, const T& cx, const T& cy) {
+  const K2::Point_2 a(toQ(ax), toQ(ay)), b(toQ(bx), toQ(by)), c(toQ(cx), toQ(cy));
+  return static_cast<int>(CGAL::orientation(a, b, c));  // LEFT_TURN = 1, RIGHT_TURN = -1
+}
+
+// orient2d against CGAL, plus the sign rules (a swap flips it, a rotation keeps it) and
+// the expansion stage alone. Returns the exact sign.
+template <class T>
+int expectExact2d(const T& ax, const T& ay, const T& bx, const T& by, const T& cx, const T& cy,
+                  const std::string& what, int& failures) {
+  const int want = cgalOrientation(ax, ay, bx, by, cx, cy);
+  const int got = mink::orient2d(ax, ay, bx, by, cx, cy);
+  const int swapped = mink::orient2d(bx, by, ax, ay, cx, cy);
+  const int rotated = mink::orient2d(bx, by, cx, cy, ax, ay);
+  int expansion = want;
+  if constexpr (std::is_same<T, double>::value || std::is_same<T, long double>::value)
+    expansion = mink::detail::exactOrient2d(ax, ay, bx, by, cx, cy);
+  if ((got != want || swapped != -want || rotated != want || expansion != want) && failures++ < 8) {
+    std::ostringstream os;
+    os.precision(21);
+    os << what << ": orient2d = " << got << ", swapped " << swapped << ", rotated " << rotated
+       << ", exactOrient2d " << expansion << ", CGAL " << want << "\n  a=(" << ld(ax) << ", " << ld(ay) << ") b=("
+       << ld(bx) << ", " << ld(by) << ") c=(" << ld(cx) << ", " << ld(cy) << ")";
+    ADD_FAILURE() << os.str();
+  }
+  return want;
+}
+
+template <class T>
+class Orient2d : public ::testing::Test {};
+TYPED_TEST_SUITE(Orient2d, Floats);
+
+TYPED_TEST(Orient2d, GenericPoints) {
+  using T = TypeParam;
+  std::mt19937 rng(9201u);
+  int failures = 0;
+  for (int i = 0; i < 10000; ++i) {
+    const T ax = randomValue<T>(rng, -1, 1), ay = randomValue<T>(rng, -1, 1), bx = randomValue<T>(rng, -1, 1),
+            by = randomValue<T>(rng, -1, 1), cx = randomValue<T>(rng, -1, 1), cy = randomValue<T>(rng, -1, 1);
+    expectExact2d(ax, ay, bx, by, cx, cy, "seed 9201 generic #" + std::to_string(i), failures);
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+// c = a + s (b - a), rounded: on the line up to the rounding, so the filter cannot decide.
+TYPED_TEST(Orient2d, NearlyCollinear) {
+  using T = TypeParam;
+  std::mt19937 rng(9202u);
+  std::uniform_real_distribution<double> st(-3.0, 3.0);
+  int failures = 0, signs[3] = {0, 0, 0};
+  for (int i = 0; i < 10000; ++i) {
+    const T ax = randomValue<T>(rng, -10, 10), ay = randomValue<T>(rng, -10, 10), bx = randomValue<T>(rng, -10, 10),
+            by = randomValue<T>(rng, -10, 10);
+    const T s = T(st(rng));
+    const T cx = ax + s * (bx - ax), cy = ay + s * (by - ay);
+    ++signs[expectExact2d(ax, ay, bx, by, cx, cy, "seed 9202 nearly collinear #" + std::to_string(i), failures) + 1];
+  }
+  EXPECT_EQ(failures, 0);
+  EXPECT_GT(signs[0] + signs[2], 0);  // the exact stage decided non-zero signs too
+}
+
+// Shewchuk's pattern: points of the line y = x moved by -4..4 ulps in each coordinate.
+TYPED_TEST(Orient2d, UlpPerturbationsOfALine) {
+  using T = TypeParam;
+  int failures = 0, signs[3] = {0, 0, 0};
+  const T inf = std::numeric_limits<T>::infinity();
+  for (T base : {T(0.5), T(12), T(24), T(-1023.75)}) {
+    for (int i = -4; i <= 4; ++i)
+      for (int j = -4; j <= 4; ++j) {
+        T cx = base, cy = base;
+        for (int n = 0; n < std::abs(i); ++n) cx = std::nextafter(cx, i > 0 ? inf : -inf);
+        for (int n = 0; n < std::abs(j); ++n) cy = std::nextafter(cy, j > 0 ? inf : -inf);
+        const int e = expectExact2d(T(12), T(12), T(24), T(24), cx, cy,
+                                    "ulp grid (" + std::to_string(i) + "," + std::to_string(j) + ")", failures);
+        ++signs[e + 1];
+      }
+  }
+  EXPECT_EQ(failures, 0);
+  EXPECT_GT(signs[0], 0);
+  EXPECT_GT(signs[1], 0);
+  EXPECT_GT(signs[2], 0);
+}
+
+TYPED_TEST(Orient2d, DegenerateConfigurations) {
+  using T = TypeParam;
+  std::mt19937 rng(9203u);
+  int failures = 0;
+  std::uniform_int_distribution<int> small(-1000, 1000);
+  for (int i = 0; i < 2000; ++i) {
+    const T ax = randomValue<T>(rng, -1, 1), ay = randomValue<T>(rng, -1, 1), bx = randomValue<T>(rng, -1, 1),
+            by = randomValue<T>(rng, -1, 1);
+    EXPECT_EQ(mink::orient2d(ax, ay, ax, ay, bx, by), 0);
+    EXPECT_EQ(mink::orient2d(ax, ay, bx, by, bx, by), 0);
+    // Midpoints are rounded: usually an ulp off the line.
+    expectExact2d(ax, ay, bx, by, T((ax + bx) / 2), T((ay + by) / 2), "seed 9203 midpoint #" + std::to_string(i),
+                  failures);
+    // Integer points on the line y = 3x - 7, scaled to where the naive formula cancels.
+    const int x0 = small(rng), x1 = small(rng), x2 = small(rng);
+    const T s = std::ldexp(T(1), 20);
+    const T px = T(x0) * s, py = T(3 * x0 - 7) * s, qx = T(x1) * s, qy = T(3 * x1 - 7) * s, rx = T(x2) * s,
+            ry = T(3 * x2 - 7) * s;
+    EXPECT_EQ(expectExact2d(px, py, qx, qy, rx, ry, "seed 9203 integer collinear #" + std::to_string(i), failures), 0);
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+TYPED_TEST(Orient2d, ExtremeScales) {
+  using T = TypeParam;
+  std::mt19937 rng(9204u);
+  std::uniform_real_distribution<double> st(-2.0, 2.0);
+  int failures = 0;
+  const int emax = std::is_same<T, float>::value ? 30 : 250;
+  for (int e : {-emax, -emax / 2, 0, emax / 2, emax}) {
+    for (int i = 0; i < 2000; ++i) {
+      T v[6];
+      for (int k = 0; k < 4; ++k) v[k] = randomValue<T>(rng, -1, 1);
+      const T s = T(st(rng));
+      v[4] = v[0] + s * (v[2] - v[0]);
+      v[5] = v[1] + s * (v[3] - v[1]);
+      for (T& x : v) x = std::ldexp(x, e);
+      expectExact2d(v[0], v[1], v[2], v[3], v[4], v[5], "seed 9204 scale 2^" + std::to_string(e) + " #" + std::to_string(i),
+                    failures);
+    }
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+// Coordinates below 2^-485 beside coordinates of size 1: the double expansion would
+// underflow; orient2d must still be exact (it then works in long double).
+TEST(Orient2dExact, TinyCoordinatesBesideUnitOnes) {
+  std::mt19937 rng(9205u);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  const double tiny[] = {1e-300, -3e-305, std::numeric_limits<double>::min(), 1e-310,
+                         std::numeric_limits<double>::denorm_min(), 7e-150, -1e-200, 0.0};
+  std::uniform_int_distribution<int> pick(0, 7);
+  int failures = 0;
+  for (int i = 0; i < 4000; ++i) {
+    // Three points on the x axis, with tiny y's: the sign is decided by those alone.
+    const double ax = u(rng), bx = u(rng), cx = u(rng);
+    const double ay = tiny[pick(rng)], by = tiny[pick(rng)], cy = tiny[pick(rng)];
+    expectExact2d(ax, ay, bx, by, cx, cy, "seed 9205 #" + std::to_string(i), failures);
+    expectExact2d(ay, ax, by, bx, cy, cx, "seed 9205 transposed #" + std::to_string(i), failures);
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+TEST(Orient2dExact, Gmpq) {
+  std::mt19937 rng(9206u);
+  std::uniform_int_distribution<int> num(-1000, 1000), den(1, 99);
+  auto rnd = [&] { return Q(num(rng), den(rng)); };
+  int failures = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Q ax = rnd(), ay = rnd(), bx = rnd(), by = rnd();
+    expectExact2d(ax, ay, bx, by, rnd(), rnd(), "seed 9206 generic #" + std::to_string(i), failures);
+    const Q s = rnd();
+    const Q cx = ax + s * (bx - ax), cy = ay + s * (by - ay);
+    EXPECT_EQ(mink::orient2d(ax, ay, bx, by, cx, cy), 0) << "seed 9206 collinear #" << i;
+    expectExact2d(ax, ay, bx, by, cx, Q(cy + Q(1, 1000000007)), "seed 9206 just off #" + std::to_string(i), failures);
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+// The Vec3 form: orient2d(a, b, c, k) is the exact sign of component k of (b - a) x (c - a),
+// on near-degenerate triangles (c close to the line ab), checked against the exact cross
+// product in Gmpq.
+TEST(Orient2dExact, DroppedAxisIsTheSignOfThatCrossComponent) {
+  std::mt19937 rng(9207u);
+  std::uniform_real_distribution<double> st(-2.0, 2.0);
+  int failures = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const Vec3<double> a = randomPoint<double>(rng), b = randomPoint<double>(rng);
+    const Vec3<double> c = i % 2 ? Vec3<double>(a + st(rng) * (b - a)) : randomPoint<double>(rng);
+    const Vec3<Q> n = (toQ3(b) - toQ3(a)).cross(toQ3(c) - toQ3(a));
+    for (int k = 0; k < 3; ++k) {
+      const int got = mink::orient2d(a, b, c, k);
+      if (got != CGAL::sign(n[k]) && failures++ < 8)
+        ADD_FAILURE() << "seed 9207 #" << i << " axis " << k << ": orient2d " << got << ", exact "
+                      << CGAL::sign(n[k]) << "\n  a=" << str(a) << " b=" << str(b) << " c=" << str(c);
+    }
+  }
+  EXPECT_EQ(failures, 0);
+  // Sign convention: counter-clockwise is positive; dropping z reads (x, y).
+  EXPECT_EQ(mink::orient2d(0.0, 0.0, 1.0, 0.0, 0.0, 1.0), 1);
+  EXPECT_EQ(mink::orient2d(Vec3<double>(0, 0, 5), Vec3<double>(1, 0, 5), Vec3<double>(0, 1, 5), 2), 1);
+  EXPECT_EQ(mink::orient2d(Vec3<double>(0, 0, 5), Vec3<double>(1, 0, 5), Vec3<double>(0, 1, 5), 0), 0);
 }
 
 }  // namespace

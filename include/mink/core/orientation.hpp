@@ -1,8 +1,13 @@
-// mink/core/orientation.hpp — the exact sign of the 3-D orientation determinant for
-// floating-point inputs (and for exact scalars, trivially).
+// mink/core/orientation.hpp — the exact signs of the 3-D and 2-D orientation determinants
+// for floating-point inputs (and for exact scalars, trivially).
 //
 // orient3d(a, b, c, d) = sign det[b − a, c − a, d − a]: > 0 when d lies on the side of
 // the plane (a, b, c) that (b − a) × (c − a) points to.
+// orient2d(a, b, c) = sign of (b − a) × (c − a) for points of the plane: > 0 when a, b, c
+// turn counter-clockwise. Given as two scalars per point, or as Vec3 with one axis k
+// dropped: the points are then read in the axes (k + 1, k + 2) mod 3, so that
+// orient2d(a, b, c, k) is the exact sign of component k of (b − a) × (c − a) (the
+// orientation of the triangle's projection along axis k, seen from +k).
 // For floating-point T the sign is the sign of the determinant of the *given* numbers,
 // exactly, by the method of J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic
 // and Fast Robust Geometric Predicates" (DCG 18, 1997):
@@ -18,12 +23,14 @@
 //      smaller coordinate (1e-300 beside 1) sends step 2 to long double where it has
 //      the exponent range (x87 extended or binary128: 2^-16382), which holds every such
 //      product; where long double is double (MSVC), such inputs may get a wrong sign.
+//      orient2d multiplies two differences, not three: its bound is 2^-485 (about 1e-146).
 // No intermediate value overflows while |coordinates| <= 2^296 (about 1e89), the bound
 // mink validates its inputs against (ScalarTraits::largestCoordinate()).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -87,19 +94,26 @@ inline void scaleExpansion(const std::vector<F>& e, F b, std::vector<F>& h) {
 template <class F>
 int exactOrient3d(const Vec3<F>& a, const Vec3<F>& b, const Vec3<F>& c, const Vec3<F>& d);
 
+/// Is one of `values` non-zero and below 2^exponent in magnitude, where long double has
+/// the exponent range to redo an exact expansion that double would underflow in?
+inline bool needsWiderExponent(std::initializer_list<double> values, int exponent) {
+  if constexpr (std::numeric_limits<long double>::min_exponent > -4000) {
+    (void)values;
+    (void)exponent;
+    return false;  // long double is no wider than double here: nothing better to do
+  } else {
+    const double tiny = std::ldexp(1.0, exponent);
+    for (double x : values)
+      if (x != 0.0 && std::fabs(x) < tiny) return true;
+    return false;
+  }
+}
+
 /// Can exactOrient3d<double> underflow on these points (a non-zero coordinate below
 /// 2^-306: see the header comment), and has long double the range to do it instead?
 inline bool needsWiderExponent(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
                                const Vec3<double>& d) {
-  if constexpr (std::numeric_limits<long double>::min_exponent > -4000) {
-    return false;  // long double is no wider than double here: nothing better to do
-  } else {
-    const double tiny = std::ldexp(1.0, -306);
-    for (const Vec3<double>* p : {&a, &b, &c, &d})
-      for (int i = 0; i < 3; ++i)
-        if ((*p)[i] != 0.0 && std::fabs((*p)[i]) < tiny) return true;
-    return false;
-  }
+  return needsWiderExponent({a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]}, -306);
 }
 
 template <class F>
@@ -139,6 +153,43 @@ int exactOrient3d(const Vec3<F>& a, const Vec3<F>& b, const Vec3<F>& c, const Ve
           }
         }
   }
+  for (std::size_t i = acc.size(); i-- > 0;)
+    if (acc[i] != F(0)) return acc[i] > F(0) ? 1 : -1;
+  return 0;
+}
+
+/// Exact sign of (bx − ax)(cy − ay) − (by − ay)(cx − ax) by expansion arithmetic: the
+/// four differences as exact two-term expansions, their products by two-product, the
+/// sum of the sixteen terms as one non-overlapping expansion.
+template <class F>
+int exactOrient2d(F ax, F ay, F bx, F by, F cx, F cy) {
+  if constexpr (std::is_same<F, double>::value) {
+    if (needsWiderExponent({ax, ay, bx, by, cx, cy}, -485)) {
+      using L = long double;
+      return exactOrient2d<L>(ax, ay, bx, by, cx, cy);
+    }
+  }
+  F ux[2], uy[2], vx[2], vy[2];
+  twoSum(bx, F(-ax), ux[1], ux[0]);
+  twoSum(by, F(-ay), uy[1], uy[0]);
+  twoSum(cx, F(-ax), vx[1], vx[0]);
+  twoSum(cy, F(-ay), vy[1], vy[0]);
+  std::vector<F> acc{F(0)}, tmp;
+  auto add = [&](F t) {
+    if (t == F(0)) return;
+    growExpansion(acc, t, tmp);
+    acc.swap(tmp);
+  };
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      F h, l;
+      twoProduct(ux[i], vy[j], h, l);
+      add(h);
+      add(l);
+      twoProduct(uy[i], vx[j], h, l);
+      add(F(-h));
+      add(F(-l));
+    }
   for (std::size_t i = acc.size(); i-- > 0;)
     if (acc[i] != F(0)) return acc[i] > F(0) ? 1 : -1;
   return 0;
@@ -296,6 +347,42 @@ int orient3d(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>
     if (-det > bound) return -1;
     return detail::exactOrient3d(a, b, c, d);
   }
+}
+
+/// Exact sign of (b − a) × (c − a) = (bx − ax)(cy − ay) − (by − ay)(cx − ax) for the
+/// plane points a = (ax, ay), b, c: > 0 when they turn counter-clockwise. Same method
+/// and range as orient3d (see the header comment).
+template <class T>
+int orient2d(const T& ax, const T& ay, const T& bx, const T& by, const T& cx, const T& cy) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    return detail::sign(T((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)));
+  } else if constexpr (std::is_same<T, float>::value) {
+    return orient2d<double>(ax, ay, bx, by, cx, cy);
+  } else {
+    const T ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
+    const T left = ux * vy, right = uy * vx;
+    const T det = left - right;
+    using std::abs;
+    // Shewchuk's ccwerrboundA, (3 + 16 eps) eps with eps the unit roundoff, for the
+    // rounded differences, products and their difference; plus half a denormal of
+    // absolute error for each product that falls below the normal range.
+    const T eps = std::numeric_limits<T>::epsilon() / T(2);
+    const T bound = (T(3) + T(16) * eps) * eps * (abs(left) + abs(right)) +
+                    T(2) * std::numeric_limits<T>::denorm_min();
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+    return detail::exactOrient2d(ax, ay, bx, by, cx, cy);
+  }
+}
+
+/// orient2d of the projections of a, b, c along axis `dropped` (0, 1 or 2), read in the
+/// axes (dropped + 1, dropped + 2) mod 3: the exact sign of component `dropped` of
+/// (b − a) × (c − a). A triangle whose three signs (one per dropped axis) are all 0 is
+/// degenerate (its corners are collinear).
+template <class T>
+int orient2d(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, int dropped) {
+  const int i = (dropped + 1) % 3, j = (dropped + 2) % 3;
+  return orient2d<T>(a[i], a[j], b[i], b[j], c[i], c[j]);
 }
 
 }  // namespace mink
