@@ -73,6 +73,19 @@ int sign(const T& x) {
   return (T(0) < x) - (x < T(0));
 }
 
+/// `x` as a double (rounded): a plain conversion for the built-in scalars and for types
+/// with an explicit one, otherwise `to_double(x)` found by argument-dependent lookup
+/// (CGAL number types). For reported values and for conservative bounds that are checked
+/// exactly afterwards, never for a decision.
+template <class T>
+double toDouble(const T& x) {
+  if constexpr (std::is_constructible<double, const T&>::value) {
+    return static_cast<double>(x);
+  } else {
+    return to_double(x);
+  }
+}
+
 /// Euclidean length, for inexact scalars only (reported values and tolerance scaling).
 template <class Derived>
 typename Derived::Scalar norm(const Eigen::MatrixBase<Derived>& v) {

@@ -30,6 +30,7 @@
 
 #include "mink/core/defaults.hpp"
 #include "mink/core/error.hpp"
+#include "mink/core/index_range.hpp"
 #include "mink/core/scalar_traits.hpp"
 #include "mink/core/types.hpp"
 
@@ -44,20 +45,6 @@ struct HullOptions {
   /// whatever its value. Negative (default): automatic,
   /// defaults::kHullToleranceFactor * eps * extent for inexact T, exactly 0 for exact T.
   T tolerance = T(-1);
-};
-
-/// Read-only view of a contiguous run of ints (a CSR row).
-class IndexRange {
- public:
-  IndexRange(const int* b, const int* e) : begin_(b), end_(e) {}
-  const int* begin() const { return begin_; }
-  const int* end() const { return end_; }
-  int size() const { return static_cast<int>(end_ - begin_); }
-  int operator[](int i) const { return begin_[i]; }
-
- private:
-  const int* begin_;
-  const int* end_;
 };
 
 namespace detail {

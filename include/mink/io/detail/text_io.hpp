@@ -87,16 +87,8 @@ bool parseScalar(std::string_view token, T& out) {
   return true;
 }
 
-/// `x` as a double for a non-floating-point scalar: an explicit conversion if T has one,
-/// otherwise `to_double(x)` found by argument-dependent lookup (CGAL number types).
-template <class T>
-double toDouble(const T& x) {
-  if constexpr (std::is_constructible<double, const T&>::value) {
-    return static_cast<double>(x);
-  } else {
-    return to_double(x);
-  }
-}
+/// `x` as a double for a non-floating-point scalar (see core/scalar_traits.hpp).
+using mink::detail::toDouble;
 
 /// Writes `x` so that parseScalar<T> gives it back exactly for float / double / long
 /// double (shortest round-trip text, std::to_chars). Other scalars are written as the

@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "mink/core/detail/input_checks.hpp"
 #include "mink/core/orientation.hpp"
 #include "mink/polyhedron/detail/quickhull.hpp"
 
@@ -48,22 +48,7 @@ struct PolyhedronBuilder {
   }
 
   static void checkFinite(const std::vector<Vec3<T>>& pts, const char* who, const char* what) {
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      for (int k = 0; k < 3; ++k) {
-        if (!ScalarTraits<T>::isFinite(pts[i][k]))
-          throw InvalidInput(std::string(who) + ": " + what + " " + std::to_string(i) +
-                             " has a non-finite coordinate (NaN or Inf)");
-        if constexpr (!ScalarTraits<T>::isExact) {
-          if (ScalarTraits<T>::inCoordinateRange(pts[i][k])) continue;
-          char msg[256];
-          std::snprintf(msg, sizeof msg,
-                        " has a coordinate out of range (%.3g; coordinates must be at most %.3g in magnitude, "
-                        "where the exact predicates cannot overflow)",
-                        static_cast<double>(pts[i][k]), static_cast<double>(ScalarTraits<T>::largestCoordinate()));
-          throw InvalidInput(std::string(who) + ": " + what + " " + std::to_string(i) + msg);
-        }
-      }
-    }
+    checkCoordinates(pts, who, what);
   }
 
   /// |(b − o) × (c − o)| as len · 2^exp, to compare triangles without underflow (the
