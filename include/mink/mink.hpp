@@ -9,6 +9,7 @@
 // core: scalar traits, Vec3 / Pose, tolerances and the one exception type.
 #include "mink/core/defaults.hpp"
 #include "mink/core/error.hpp"
+#include "mink/core/index_range.hpp"
 #include "mink/core/scalar_traits.hpp"
 #include "mink/core/orientation.hpp"
 #include "mink/core/types.hpp"
@@ -24,7 +25,17 @@
 // mdd: the minimum directional distance between two convex polyhedra.
 #include "mink/mdd/mdd.hpp"
 
-// io: OBJ and OFF readers and writers.
+// mesh: TriangleMesh<T> (closed, non-convex, any genus), its sphere tree, exact triangle
+// tests, point location, self-intersection and mesh-mesh overlap.
+#include "mink/mesh/mesh_overlap.hpp"
+#include "mink/mesh/point_in_mesh.hpp"
+#include "mink/mesh/self_intersection.hpp"
+#include "mink/mesh/sphere_tree.hpp"
+#include "mink/mesh/triangle_intersection.hpp"
+#include "mink/mesh/triangle_mesh.hpp"
+
+// io: OBJ and OFF readers and writers, and OBJ / OFF to TriangleMesh.
 #include "mink/io/indexed_mesh.hpp"
 #include "mink/io/obj.hpp"
 #include "mink/io/off.hpp"
+#include "mink/io/triangle_mesh_io.hpp"

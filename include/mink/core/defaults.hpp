@@ -96,5 +96,13 @@ constexpr double kMddParallelEdgeFactor = 64.0;
 /// Safe range: 0 .. 0.1 (smaller accepts more faces without a search).
 constexpr double kMddCertificateSine = 1.0 / 256.0;
 
+/// Mesh point location (mesh/point_in_mesh.hpp): rays cast from one point before the
+/// answer is PointLocation::Undecided. A ray is cast again, in another direction, only
+/// when it meets an edge or a corner of the mesh exactly (or lies in a triangle's plane
+/// across it); each direction has a different irrational-like slant, so for any input not
+/// built against this sequence the first or second ray decides. Unit: rays. Safe range:
+/// 6 .. 1000 (any value is correct; a larger one only makes Undecided rarer).
+constexpr int kPointInMeshMaxRays = 64;
+
 }  // namespace defaults
 }  // namespace mink

@@ -42,17 +42,17 @@ void checkCoordinates(const std::vector<Vec3<T>>& pts, const char* who, const ch
 /// Checks a rigid placement x -> rotation x + translation: finite entries, a translation
 /// within ScalarTraits<T>::largestCoordinate(), R^T R = I within
 /// defaults::kRotationTolerance (or 100 eps, if larger; exactly for exact T) and det R > 0.
-/// Throws InvalidInput "<who>: <name>.rotation is not orthonormal" and the like.
+/// Throws InvalidInput "<who>: <name>.rotation is not orthonormal" and the like; allocates
+/// nothing when the placement is fine (it runs on every re-placement of a query object).
 template <class T>
-void checkRigidPlacement(const Mat3<T>& rotation, const Vec3<T>& translation, const std::string& who,
-                         const std::string& name) {
-  const std::string prefix = who + ": " + name;
+void checkRigidPlacement(const Mat3<T>& rotation, const Vec3<T>& translation, const char* who, const char* name) {
+  auto fail = [&](const char* problem) { throw InvalidInput(std::string(who) + ": " + name + problem); };
   for (int i = 0; i < 3; ++i) {
-    if (!ScalarTraits<T>::isFinite(translation[i])) throw InvalidInput(prefix + ".translation is not finite");
+    if (!ScalarTraits<T>::isFinite(translation[i])) fail(".translation is not finite");
     if (!ScalarTraits<T>::inCoordinateRange(translation[i]))
-      throw InvalidInput(prefix + ".translation is out of range (above ScalarTraits::largestCoordinate())");
+      fail(".translation is out of range (above ScalarTraits::largestCoordinate())");
     for (int j = 0; j < 3; ++j)
-      if (!ScalarTraits<T>::isFinite(rotation(i, j))) throw InvalidInput(prefix + ".rotation is not finite");
+      if (!ScalarTraits<T>::isFinite(rotation(i, j))) fail(".rotation is not finite");
   }
   const Mat3<T> E = rotation.transpose() * rotation - Mat3<T>::Identity();
   T tol = T(0);
@@ -60,8 +60,8 @@ void checkRigidPlacement(const Mat3<T>& rotation, const Vec3<T>& translation, co
     tol = std::max(T(defaults::kRotationTolerance), T(100) * ScalarTraits<T>::epsilon());
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
-      if (absValue(T(E(i, j))) > tol) throw InvalidInput(prefix + ".rotation is not orthonormal");
-  if (!(rotation.determinant() > T(0))) throw InvalidInput(prefix + ".rotation is a reflection (determinant < 0)");
+      if (absValue(T(E(i, j))) > tol) fail(".rotation is not orthonormal");
+  if (!(rotation.determinant() > T(0))) fail(".rotation is a reflection (determinant < 0)");
 }
 
 }  // namespace detail

@@ -1,0 +1,402 @@
+// Tests of mink/mesh/mesh_overlap.hpp:
+//   - random poses of pairs of procedural and shipped meshes against FCL's mesh BVH
+//     (fcl::BVHModel<OBBRSSd> + fcl::collide), and many translations y per pose. FCL
+//     tests boundaries only, so poses where mink reports one solid inside the other are
+//     checked instead against CGAL's exact Side_of_triangle_mesh (the witness vertex is
+//     inside). Where FCL and mink disagree otherwise, the exact brute force (CGAL
+//     do_intersect with exact predicates, every triangle pair, on the very numbers mink
+//     used) decides: mink must agree with it, and the pose must be near touching
+//     (FCL's distance below 1e-6 of the scene), the one stated reason to exclude it;
+//   - containment and exact touching by hand: a box in a torus's tube, a box in a cube,
+//     boxes in and beside the hole of the cube with a hole, two components, faces in
+//     exact contact and one ulp apart;
+//   - no allocation in warm queries; pose validation.
+#include "mink/mesh/mesh_overlap.hpp"
+
+#include <gtest/gtest.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/intersections.h>
+
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/math/bv/OBBRSS.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "mink/io/triangle_mesh_io.hpp"
+#include "support/expect_rejected.hpp"
+#include "support/mesh_shapes.hpp"
+
+// AddressSanitizer owns operator new/delete: the counting replacement, and the allocation
+// check, exist only in non-ASan builds (as in tests/mdd/allocation_test.cpp).
+#if defined(__SANITIZE_ADDRESS__)
+#define MINK_COUNT_ALLOCATIONS 0
+#else
+#define MINK_COUNT_ALLOCATIONS 1
+#endif
+
+namespace {
+std::atomic<bool> gCounting{false};
+std::atomic<long> gAllocations{0};
+}  // namespace
+
+#if MINK_COUNT_ALLOCATIONS
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+void* operator new(std::size_t n) {
+  if (gCounting.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#endif
+
+namespace {
+
+using Mesh = mink::TriangleMesh<double>;
+using V = Eigen::Vector3d;
+using M3 = Eigen::Matrix3d;
+using mink::OverlapStatus;
+
+Mesh fromShape(const mink_test::MeshShape& s) { return Mesh::fromMesh(s.verticesAs<double>(), s.triangles); }
+// The shape scaled by a power of two (exactly).
+Mesh scaled(const mink_test::MeshShape& s, double factor) {
+  std::vector<mink::Vec3<double>> v = s.verticesAs<double>();
+  for (auto& p : v) p *= factor;
+  return Mesh::fromMesh(v, s.triangles);
+}
+Mesh shipped(const std::string& f) { return mink::io::readTriangleMesh<double>(std::string(MINK_TEST_DATA_DIR) + "/" + f); }
+
+// ---- references ------------------------------------------------------------------------
+
+std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fclModel(const Mesh& m) {
+  auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+  std::vector<fcl::Vector3d> pts(m.vertices().begin(), m.vertices().end());
+  std::vector<fcl::Triangle> tris;
+  for (const auto& t : m.triangles()) tris.emplace_back(t[0], t[1], t[2]);
+  model->beginModel();
+  model->addSubModel(pts, tris);
+  model->endModel();
+  return model;
+}
+
+struct FclPair {
+  std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> a, b;
+  bool collide(const M3& R, const V& t) const {
+    fcl::Transform3d tb = fcl::Transform3d::Identity();
+    tb.linear() = R;
+    tb.translation() = t;
+    fcl::CollisionObjectd oa(a, fcl::Transform3d::Identity()), ob(b, tb);
+    fcl::CollisionRequestd request;
+    fcl::CollisionResultd result;
+    fcl::collide(&oa, &ob, request, result);
+    return result.isCollision();
+  }
+  double distance(const M3& R, const V& t) const {
+    fcl::Transform3d tb = fcl::Transform3d::Identity();
+    tb.linear() = R;
+    tb.translation() = t;
+    fcl::CollisionObjectd oa(a, fcl::Transform3d::Identity()), ob(b, tb);
+    fcl::DistanceRequestd request;
+    fcl::DistanceResultd result;
+    fcl::distance(&oa, &ob, request, result);
+    return result.min_distance;
+  }
+};
+
+using Epick = CGAL::Epick;
+
+// Exact: does any triangle of A meet any triangle of B, B's corners given (brute force,
+// CGAL's exact predicates, box prefilter)?
+bool bruteForceBoundariesMeet(const Mesh& A, const std::vector<V>& bPoints, const Mesh& B) {
+  auto P = [](const V& p) { return Epick::Point_3(p.x(), p.y(), p.z()); };
+  std::vector<Epick::Triangle_3> ta, tb;
+  std::vector<CGAL::Bbox_3> ba, bb;
+  for (const auto& t : A.triangles()) ta.emplace_back(P(A.vertex(t[0])), P(A.vertex(t[1])), P(A.vertex(t[2])));
+  for (const auto& t : B.triangles()) tb.emplace_back(P(bPoints[t[0]]), P(bPoints[t[1]]), P(bPoints[t[2]]));
+  for (const auto& t : ta) ba.push_back(t.bbox());
+  for (const auto& t : tb) bb.push_back(t.bbox());
+  for (std::size_t i = 0; i < ta.size(); ++i)
+    for (std::size_t j = 0; j < tb.size(); ++j)
+      if (CGAL::do_overlap(ba[i], bb[j]) && CGAL::do_intersect(ta[i], tb[j])) return true;
+  return false;
+}
+
+// CGAL's exact point location in A.
+class CgalInside {
+ public:
+  using SM = CGAL::Surface_mesh<Epick::Point_3>;
+  explicit CgalInside(const Mesh& m) {
+    std::vector<SM::Vertex_index> vi;
+    for (const V& p : m.vertices()) vi.push_back(mesh_.add_vertex(Epick::Point_3(p.x(), p.y(), p.z())));
+    for (const auto& t : m.triangles()) mesh_.add_face(vi[t[0]], vi[t[1]], vi[t[2]]);
+    side_ = std::make_unique<CGAL::Side_of_triangle_mesh<SM, Epick>>(mesh_);
+  }
+  bool inside(const V& p) const { return (*side_)(Epick::Point_3(p.x(), p.y(), p.z())) == CGAL::ON_BOUNDED_SIDE; }
+
+ private:
+  SM mesh_;
+  std::unique_ptr<CGAL::Side_of_triangle_mesh<SM, Epick>> side_;
+};
+
+M3 randomRotation(std::mt19937& rng) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  return Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().toRotationMatrix();
+}
+
+V randomUnit(std::mt19937& rng) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  return V(n(rng), n(rng), n(rng)).normalized();
+}
+
+// ---- random poses against FCL ------------------------------------------------------
+
+struct Tally {
+  int overlapping = 0, separate = 0, contained = 0, fclTolerance = 0, failures = 0;
+};
+
+// One query: mink's answer against FCL (or, for containment, CGAL's point location), the
+// exact brute force deciding any disagreement.
+void checkQuery(mink::MeshOverlap<double>& o, const FclPair& fcl, const CgalInside& insideA, const CgalInside& insideB,
+                const V& y, const std::string& id, Tally& tally) {
+  const bool ours = o.overlaps(y);
+  const mink::OverlapResult r = o.result();
+  const Mesh &A = o.meshA(), &B = o.meshB();
+  std::vector<V> placed(B.vertices().size());
+  for (std::size_t v = 0; v < placed.size(); ++v) placed[v] = o.placedVertexB(static_cast<int>(v));
+  if (r.status == OverlapStatus::BInsideA || r.status == OverlapStatus::AInsideB) {
+    ++tally.contained;
+    // Independent check of the witness: CGAL's location of the vertex in the other solid
+    // (A in B + y: moved back into B's frame, in double: a far-from-boundary witness).
+    const bool ok = r.status == OverlapStatus::BInsideA
+                        ? insideA.inside(placed[r.vertex])
+                        : insideB.inside(o.rotation().transpose() * (A.vertex(r.vertex) - o.translation() - y));
+    if (!ok && tally.failures++ < 5) ADD_FAILURE() << id << ": containment witness " << r.vertex << " not confirmed";
+    return;
+  }
+  if (r.status == OverlapStatus::Undecided && tally.failures++ < 5) ADD_FAILURE() << id << ": Undecided";
+  (ours ? tally.overlapping : tally.separate)++;
+  const bool theirs = fcl.collide(o.rotation(), V(o.translation() + y));
+  if (theirs == ours) return;
+  const bool exact = bruteForceBoundariesMeet(A, placed, B);
+  const double gap = fcl.distance(o.rotation(), V(o.translation() + y));
+  const double scene = A.extent() + B.extent() + (o.translation() + y).cwiseAbs().sum();
+  if (exact == ours && std::abs(gap) <= 1e-6 * scene) {
+    ++tally.fclTolerance;  // FCL's own tolerance near touching: excluded, counted
+    return;
+  }
+  if (tally.failures++ < 5)
+    ADD_FAILURE() << id << ": mink " << ours << " (status " << static_cast<int>(r.status) << "), FCL " << theirs
+                  << ", exact brute force " << exact << ", FCL distance " << gap;
+}
+
+struct PairCase {
+  std::string name;
+  Mesh A, B;
+  int poses;
+};
+
+void runPairs(const std::vector<PairCase>& cases, unsigned seed, int ysPerPose) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const PairCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    const FclPair fcl{fclModel(c.A), fclModel(c.B)};
+    const CgalInside insideA(c.A), insideB(c.B);
+    const auto& ta = c.A.sphereTree();
+    const auto& tb = c.B.sphereTree();
+    const double ra = ta.radius(0), rb = tb.radius(0);
+    Tally tally;
+    for (int i = 0; i < c.poses; ++i) {
+      const M3 R = randomRotation(rng);
+      // B's root centre placed at a random distance from A's: from deep inside to apart.
+      const V t = ta.centre(0) - R * tb.centre(0) + randomUnit(rng) * (ra + rb) * (0.05 + 1.1 * u(rng));
+      mink::MeshOverlap<double> o(c.A, c.B, R, t);
+      const std::string id = "seed " + std::to_string(seed) + " " + c.name + " pose " + std::to_string(i);
+      checkQuery(o, fcl, insideA, insideB, V::Zero(), id, tally);
+      for (int k = 0; k < ysPerPose; ++k)
+        checkQuery(o, fcl, insideA, insideB, randomUnit(rng) * 0.3 * (ra + rb) * u(rng), id + " y " + std::to_string(k),
+                   tally);
+    }
+    std::printf("    %-28s overlap %4d, separate %4d, contained %3d, excluded (FCL tolerance near touching) %d\n",
+                c.name.c_str(), tally.overlapping, tally.separate, tally.contained, tally.fclTolerance);
+    EXPECT_EQ(tally.failures, 0);
+    EXPECT_GT(tally.overlapping, 0);
+    EXPECT_GT(tally.separate, 0);
+    EXPECT_LE(tally.fclTolerance, (c.poses * (1 + ysPerPose)) / 50);
+  }
+}
+
+TEST(MeshOverlap, ProceduralPairsAgainstFcl) {
+#ifdef MINK_SANITIZE_BUILD
+  const int poses = 20;
+#else
+  const int poses = 150;
+#endif
+  using namespace mink_test;
+  runPairs({{"torus 12x8 / L-block", fromShape(torus(12, 8)), fromShape(lBlock()), poses},
+            {"star prism / U-block", fromShape(starPrism()), fromShape(uBlock()), poses},
+            {"axes / cup", fromShape(axes()), fromShape(cup()), poses},
+            {"spoon / cup", fromShape(spoon()), fromShape(cup()), poses},
+            {"cube with hole / cone", fromShape(cubeWithHole()), fromShape(cone()), poses},
+            {"torus 24x12 / torus 12x8", fromShape(torus(24, 12)), fromShape(torus(12, 8)), poses}},
+           5101u, 4);
+}
+
+TEST(MeshOverlap, ShippedPairsAgainstFcl) {
+#ifdef MINK_SANITIZE_BUILD
+  const int poses = 4;
+#else
+  const int poses = 40;
+#endif
+  runPairs({{"duck / torus.obj", shipped("duck.obj"), shipped("torus.obj"), poses},
+            {"bunny / concave_box", shipped("bunny.obj"), shipped("concave_box.obj"), poses},
+            {"shape_sorter / star prism", shipped("shape_sorter.obj"), scaled(mink_test::starPrism(), 1.0 / 128), poses}},
+           5102u, 2);
+}
+
+// ---- containment and exact contact by hand -------------------------------------------
+
+Mesh boxAt(const V& centre, double half) {
+  return fromShape(mink_test::boxShape(centre - V(half, half, half), centre + V(half, half, half)));
+}
+
+OverlapStatus status(const Mesh& A, const Mesh& B, const M3& R = M3::Identity(), const V& t = V::Zero(),
+                     const V& y = V::Zero()) {
+  mink::MeshOverlap<double> o(A, B, R, t);
+  o.overlaps(y);
+  return o.result().status;
+}
+
+TEST(MeshOverlap, ContainmentByHand) {
+  const Mesh torus = fromShape(mink_test::torus(12, 8));  // R = 2, r = 0.75: the tube holds x in (1.3, 2.7)
+  const Mesh small = boxAt(V::Zero(), 0.1);
+  std::mt19937 rng(5103u);
+  EXPECT_EQ(status(torus, small, randomRotation(rng), V(2, 0, 0)), OverlapStatus::BInsideA);
+  EXPECT_EQ(status(small, torus, M3::Identity(), V(-2, 0, 0)), OverlapStatus::AInsideB);
+  EXPECT_EQ(status(torus, small, M3::Identity(), V(0, 0, 0)), OverlapStatus::Separate);  // in the hole
+  EXPECT_EQ(status(torus, small, M3::Identity(), V(0, 2, 0.3)), OverlapStatus::BInsideA);
+  // A box in a cube, turned; and the other way round.
+  const Mesh cube = fromShape(mink_test::boxShape(V(-3, -3, -3), V(3, 3, 3)));
+  const Mesh unit = boxAt(V::Zero(), 1);
+  for (int i = 0; i < 10; ++i) {
+    const M3 R = randomRotation(rng);
+    EXPECT_EQ(status(cube, unit, R, V(0.5, -0.25, 0.125)), OverlapStatus::BInsideA) << i;
+    EXPECT_EQ(status(unit, cube, R, V(0.5, -0.25, 0.125)), OverlapStatus::AInsideB) << i;
+  }
+  // The cube with a hole: a box in its hole is apart; in its wall, inside; across the
+  // hole's wall, the boundaries meet.
+  const Mesh holed = fromShape(mink_test::cubeWithHole());
+  const Mesh quarter = boxAt(V::Zero(), 0.25);
+  EXPECT_EQ(status(holed, quarter, M3::Identity(), V(1.5, 1.5, 1.5)), OverlapStatus::Separate);
+  EXPECT_EQ(status(holed, quarter, M3::Identity(), V(0.5, 0.5, 1.5)), OverlapStatus::BInsideA);
+  EXPECT_EQ(status(holed, quarter, M3::Identity(), V(1.0, 1.5, 1.5)), OverlapStatus::BoundariesMeet);
+  // Two components in B: one far away, one inside A.
+  auto a = mink_test::boxShape(V(10, 10, 10), V(11, 11, 11)), b = mink_test::boxShape(V(-1, -1, -1), V(1, 1, 1));
+  std::vector<mink::Vec3<double>> verts = a.verticesAs<double>();
+  std::vector<std::array<int, 3>> tris = a.triangles;
+  for (const auto& p : b.verticesAs<double>()) verts.push_back(p);
+  for (auto t : b.triangles) tris.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+  const Mesh two = Mesh::fromMesh(verts, tris);
+  mink::MeshOverlap<double> o(cube, two, M3::Identity(), V::Zero());
+  EXPECT_TRUE(o.overlaps());
+  EXPECT_EQ(o.result().status, OverlapStatus::BInsideA);
+  EXPECT_GE(o.result().vertex, 8);
+  EXPECT_FALSE(o.overlaps(V(20, 0, 0)));
+}
+
+TEST(MeshOverlap, ExactContactByHand) {
+  const Mesh L = fromShape(mink_test::lBlock());
+  const Mesh box = fromShape(mink_test::boxShape(V(0, 0, 0), V(1, 1, 1)));
+  const double ulp = std::nextafter(2.0, 3.0) - 2.0;
+  mink::MeshOverlap<double> o(L, box, M3::Identity(), V(2, 0, 0));  // face x = 2 against x = 2
+  EXPECT_TRUE(o.overlaps());
+  EXPECT_EQ(o.result().status, OverlapStatus::BoundariesMeet);
+  EXPECT_FALSE(o.overlaps(V(ulp, 0, 0)));                  // one ulp apart
+  EXPECT_TRUE(o.overlaps(V(-ulp, 0, 0)));                  // one ulp into it
+  EXPECT_TRUE(o.overlaps(V(0, 1, 0)));                     // edge on edge at (2, 1)
+  EXPECT_FALSE(o.overlaps(V(0, 1 + 1e-15, 0)));
+  EXPECT_TRUE(o.overlaps(V(-1, 1, 0)));                    // into the inner corner: faces touch
+  EXPECT_TRUE(o.overlaps(V(-1, 1, 1)));                    // corner on the top face's edge
+  EXPECT_FALSE(o.overlaps(V(-1 + 1e-15, 1 + 1e-15, 0)));  // just clear of the inner corner
+  EXPECT_TRUE(o.overlaps(V(-2, 0, 0)));                    // the same place as the L's first cube
+}
+
+TEST(MeshOverlap, PosesAndFreeFunction) {
+  const Mesh torus = fromShape(mink_test::torus(12, 8));
+  const Mesh L = fromShape(mink_test::lBlock());
+  std::mt19937 rng(5104u);
+  const FclPair fcl{fclModel(torus), fclModel(L)};
+  int agree = 0;
+  for (int i = 0; i < 100; ++i) {
+    mink::Pose<double> pa, pb;
+    pa.rotation = randomRotation(rng);
+    pa.translation = randomUnit(rng);
+    pb.rotation = randomRotation(rng);
+    pb.translation = pa.translation + randomUnit(rng) * 3.5 * std::uniform_real_distribution<double>(0, 1)(rng);
+    const bool ours = mink::meshesOverlap(torus, pa, L, pb);
+    mink::MeshOverlap<double> o(torus, pa, L, pb);
+    EXPECT_EQ(o.overlaps(), ours);
+    agree += ours == fcl.collide(pa.rotation.transpose() * pb.rotation,
+                                 pa.rotation.transpose() * (pb.translation - pa.translation));
+  }
+  EXPECT_GE(agree, 99);  // near-touching poses aside (covered by the tests above)
+  mink::Pose<double> bad;
+  bad.rotation(0, 1) = 0.1;
+  mink_test::expectRejected([&] { (void)mink::meshesOverlap(torus, bad, L, mink::Pose<double>()); },
+                            {"MeshOverlap", "poseA", "not orthonormal"}, "skewed pose");
+  mink::Pose<double> mirror;
+  mirror.rotation(2, 2) = -1;
+  mink_test::expectRejected([&] { (void)mink::meshesOverlap(torus, mink::Pose<double>(), L, mirror); },
+                            {"poseB", "reflection"}, "mirror");
+}
+
+TEST(MeshOverlap, WarmQueriesDoNotAllocate) {
+  if (!MINK_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counting is off under AddressSanitizer";
+  const Mesh torus = fromShape(mink_test::torus(12, 8));
+  const Mesh L = fromShape(mink_test::lBlock());
+  std::mt19937 rng(5105u);
+  mink::MeshOverlap<double> o(torus, L, randomRotation(rng), V(0.3, 0.1, -0.2));
+  std::vector<V> ys;
+  for (int i = 0; i < 500; ++i) ys.push_back(randomUnit(rng) * 4.0 * std::uniform_real_distribution<double>(0, 1)(rng));
+  int hits = 0;
+  for (const V& y : ys) hits += o.overlaps(y);  // warm-up
+  gAllocations = 0;
+  gCounting = true;
+  {
+    void* (*volatile allocate)(std::size_t) = &::operator new;  // the counter sees allocations
+    ::operator delete(allocate(8));
+  }
+  gCounting = false;
+  ASSERT_EQ(gAllocations.load(), 1);
+  gAllocations = 0;
+  gCounting = true;
+  int again = 0;
+  for (const V& y : ys) again += o.overlaps(y);
+  o.setPlacement(randomRotation(rng), V(0.1, 0.2, 0.3));
+  for (const V& y : ys) again += o.overlaps(y);
+  gCounting = false;
+  EXPECT_EQ(gAllocations.load(), 0);
+  EXPECT_GT(hits, 0);
+  EXPECT_LT(hits, 500);
+  EXPECT_GT(again, hits);
+}
+
+}  // namespace
