@@ -155,6 +155,17 @@ TEST(MeshHostile, ZeroVolume) {
   reject(w, t, {"inward", "negative"}, "lower cone an ulp taller");
   w[4][2] = std::nextafter(1.0, 0.0);
   EXPECT_NO_THROW((void)TriangleMesh<double>::fromMesh(w, t));
+  // The same far from the origin: the determinants are about 1e26 and their floating-point
+  // sum is rounding noise of about 1e10, of either sign; the exact sum is still 0, and
+  // the apex 2^-20 higher or lower still decides.
+  const V far(1e8, -3e8, 5e8);  // every coordinate below plus these is a double exactly
+  std::vector<V> moved = v;
+  for (V& p : moved) p += far;
+  reject(moved, t, {"zero volume"}, "cancelling cones far from the origin");
+  moved[4][2] = far[2] + 1 + std::ldexp(1.0, -20);
+  reject(moved, t, {"inward"}, "far, lower cone taller");
+  moved[4][2] = far[2] + 1 - std::ldexp(1.0, -20);
+  EXPECT_NO_THROW((void)TriangleMesh<double>::fromMesh(moved, t));
 }
 
 TEST(MeshHostile, EveryKindHasItsOwnMessage) {

@@ -8,6 +8,7 @@
 //     Side_of_triangle_mesh (exact predicates, Epick) on random points, mesh vertices
 //     (on the boundary) and edge midpoints.
 #include "mink/mesh/point_in_mesh.hpp"
+#include "mink/mesh/self_intersection.hpp"
 
 #include <gtest/gtest.h>
 
@@ -186,6 +187,59 @@ TEST(PointInMesh, BoxAndBoundaryShortcuts) {
   EXPECT_EQ(mink::locatePoint(m, V(1.0, 1.0, 1.0)), PointLocation::OnBoundary);
   EXPECT_EQ(mink::locatePoint(m, V(1.5, std::nextafter(1.0, 2.0), 0.25)), PointLocation::Outside);
   EXPECT_EQ(mink::locatePoint(m, V(1.5, std::nextafter(1.0, 0.0), 0.25)), PointLocation::Inside);
+}
+
+// A view of a mesh with a box larger than the mesh's own (a box is only a bound), so
+// that the test knows where the first ray goes: from p towards
+// q = (hi + |hi| + span, p.y + f1 span, p.z + f2 span) with the first slant (f1, f2).
+struct WideBoxView {
+  const mink::TriangleMesh<double>& mesh;
+  mink::Vec3<double> corner(int t, int i) const { return mesh.vertex(mesh.triangle(t)[i]); }
+  const mink::SphereTree<double>& tree() const { return mesh.sphereTree(); }
+  mink::Vec3<double> nodeCentre(int node) const { return mesh.sphereTree().centre(node); }
+  double nodeRadius(int node) const { return mesh.sphereTree().radius(node); }
+  V boxLo() const { return V(-8, -8, -8); }
+  V boxHi() const { return V(8, 8, 8); }
+};
+
+// The first ray from the origin is made to pass exactly through a corner (then through an
+// edge) of a convex solid around the origin: it must be cast again (counting the corner
+// as a crossing of each triangle around it would give an even count: Outside).
+TEST(PointInMesh, RayThroughACornerOrAnEdgeIsCastAgain) {
+  double f1, f2;
+  mink::detail::raySlant(0, f1, f2);
+  const V q(8 + 8 + 16, f1 * 16, f2 * 16);  // the first ray's far end from p = 0
+  const V m = q / 4;                        // exactly on the segment from 0 to q
+  ASSERT_NE(m.z(), 0.0);
+  for (int variant = 0; variant < 2; ++variant) {
+    // Variant 0: a corner at m. Variant 1: an edge from (m.x, m.y, 0) to (m.x, m.y, 2 m.z),
+    // both exact, whose midpoint is m; the front is fanned from its two ends.
+    const V a = variant == 0 ? m : V(m.x(), m.y(), 2 * m.z()), b = variant == 0 ? m : V(m.x(), m.y(), 0.0);
+    const V& low = a.z() < b.z() ? a : b;
+    const V& high = a.z() < b.z() ? b : a;
+    mink_test::mesh_shapes_detail::Builder build("wedge");
+    const V ring[4] = {V(0, 2, 0), V(0, 0, 2), V(0, -2, 0), V(0, 0, -2)}, back(-2, 0, 0);
+    for (int i = 0; i < 4; ++i) {
+      const V& r = ring[i];
+      const V& s = ring[(i + 1) % 4];
+      build.triangle(back, r, s, (back + r + s) / 3);
+      const V& tip = i < 2 ? high : low;  // the upper half of the ring to the upper end
+      build.triangle(tip, r, s, (tip + r + s) / 3);
+    }
+    if (variant == 1) {  // close the two fans along the edge
+      build.triangle(high, ring[2], low, (high + low + ring[2]) / 3);
+      build.triangle(high, low, ring[0], (high + low + ring[0]) / 3);
+    }
+    const auto shape = build.finish(0);
+    const auto mesh = mink::TriangleMesh<double>::fromMesh(shape.verticesAs<double>(), shape.triangles);
+    EXPECT_FALSE(mink::findSelfIntersection(mesh).found) << variant;
+    std::vector<int> stack;
+    int rays = 0;
+    EXPECT_EQ(mink::detail::locatePoint(WideBoxView{mesh}, V(0, 0, 0), stack, &rays), PointLocation::Inside) << variant;
+    EXPECT_EQ(rays, 2) << variant;  // the first ray was spoiled
+    EXPECT_EQ(mink::detail::locatePoint(WideBoxView{mesh}, V(-3, 0, 0), stack, &rays), PointLocation::Outside)
+        << variant;
+  }
 }
 
 }  // namespace
