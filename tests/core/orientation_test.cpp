@@ -21,32 +21,15 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include "mink/core/orientation.hpp"
+#include "support/to_rational.hpp"
 
 namespace {
 
 using mink::Vec3;
 using Q = CGAL::Gmpq;
 
-Q toQ(const Q& x) { return x; }
-Q toQ(double x) { return Q(x); }
-Q toQ(float x) { return Q(static_cast<double>(x)); }
-Q toQ(long double x) {
-  // A long double is a sum of at most a few doubles; peel them off exactly.
-  Q sum(0);
-  long double rest = x;
-  for (int i = 0; i < 4 && rest != 0.0L; ++i) {
-    const double hi = static_cast<double>(rest);
-    sum += Q(hi);
-    rest -= static_cast<long double>(hi);
-  }
-  if (rest != 0.0L) ADD_FAILURE() << "toQ: long double not converted exactly";
-  return sum;
-}
-
-template <class T>
-Vec3<Q> toQ3(const Vec3<T>& p) {
-  return Vec3<Q>(toQ(p[0]), toQ(p[1]), toQ(p[2]));
-}
+using mink_test::toQ;
+using mink_test::toQ3;
 
 template <class T>
 int exactSign(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& d) {

@@ -13,19 +13,20 @@
 
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mink/mesh/mesh_overlap.hpp"
 #include "support/exact_placement.hpp"
 #include "support/mesh_shapes.hpp"
+#include "support/to_rational.hpp"
 
 namespace {
 
 using Q = CGAL::Gmpq;
 using K = CGAL::Simple_cartesian<Q>;
 
-Q toQ(const Q& x) { return x; }
-Q toQ(float x) { return Q(static_cast<double>(x)); }
+using mink_test::toQ;
 
 template <class T>
 K::Point_3 P(const mink::Vec3<T>& p) {
@@ -72,40 +73,62 @@ TYPED_TEST(ExactAndFloat, ConstructionMatchesDouble) {
   }
 }
 
-// MeshOverlap<Gmpq> with exactly orthonormal rational rotations: every B point placed
-// exactly; the brute force runs on those same points.
-TEST(ExactAndFloatOverlap, GmpqAgainstExactBruteForce) {
+// Torus (A) against L-block (B) in scalar T: `poses` placements from nextPose(i) ->
+// (R, t), `ys` translations each from nextY(); every answer against the exact brute
+// force on the points the query used; check(v, y) may check those points further.
+template <class T, class NextPose, class NextY, class Check>
+void compareWithBruteForce(int poses, int ys, NextPose&& nextPose, NextY&& nextY, Check&& check,
+                           const std::string& id) {
   const auto ts = mink_test::torus(12, 8), ls = mink_test::lBlock();
-  const auto torus = mink::TriangleMesh<Q>::fromMesh(ts.verticesAs<Q>(), ts.triangles);
-  const auto L = mink::TriangleMesh<Q>::fromMesh(ls.verticesAs<Q>(), ls.triangles);
-  std::mt19937 rng(5201u);
-  std::uniform_int_distribution<int> num(-40, 40);
+  const auto torus = mink::TriangleMesh<T>::fromMesh(ts.template verticesAs<T>(), ts.triangles);
+  const auto L = mink::TriangleMesh<T>::fromMesh(ls.template verticesAs<T>(), ls.triangles);
   int hits = 0, misses = 0;
-#ifdef MINK_SANITIZE_BUILD
-  const int poses = 4;
-#else
-  const int poses = 20;
-#endif
   for (int i = 0; i < poses; ++i) {
-    const auto rot = mink_test::randomRationalRotation(rng, 16);
-    const mink::Vec3<Q> t(Q(num(rng), 16), Q(num(rng), 16), Q(num(rng), 32));
-    mink::MeshOverlap<Q> o(torus, L, rot.exact, t);
-    for (int k = 0; k < 3; ++k) {
-      const mink::Vec3<Q> y(Q(num(rng), 64), Q(num(rng), 64), Q(num(rng), 64));
+    const std::pair<mink::Mat3<T>, mink::Vec3<T>> pose = nextPose(i);
+    mink::MeshOverlap<T> o(torus, L, pose.first, pose.second);
+    for (int k = 0; k < ys; ++k) {
+      const mink::Vec3<T> y = nextY();
       const bool ours = o.overlaps(y);
-      std::vector<mink::Vec3<Q>> placed;
+      std::vector<mink::Vec3<T>> placed;
       for (int v = 0; v < L.numVertices(); ++v) {
         placed.push_back(o.placedVertexB(v));
-        EXPECT_EQ(placed.back(), mink::Vec3<Q>(rot.exact * L.vertex(v) + t + y));  // exact placement
+        check(i, v, L.vertex(v), y, placed.back());
       }
-      EXPECT_EQ(ours, bruteForce(torus, placed, L)) << "seed 5201 pose " << i << " y " << k;
+      EXPECT_EQ(ours, bruteForce(torus, placed, L)) << id << " pose " << i << " y " << k;
       EXPECT_NE(o.result().status, mink::OverlapStatus::Undecided);
       (ours ? hits : misses)++;
     }
   }
   EXPECT_GT(hits, 0);
   EXPECT_GT(misses, 0);
+}
+
+// MeshOverlap<Gmpq> with exactly orthonormal rational rotations: every B point placed
+// exactly; the brute force runs on those same points.
+TEST(ExactAndFloatOverlap, GmpqAgainstExactBruteForce) {
+  std::mt19937 rng(5201u);
+  std::uniform_int_distribution<int> num(-40, 40);
+#ifdef MINK_SANITIZE_BUILD
+  const int poses = 4;
+#else
+  const int poses = 20;
+#endif
+  std::vector<std::pair<mink::Mat3<Q>, mink::Vec3<Q>>> placements;
+  compareWithBruteForce<Q>(
+      poses, 3,
+      [&](int) {
+        placements.push_back({mink_test::randomRationalRotation(rng, 16).exact,
+                              mink::Vec3<Q>(Q(num(rng), 16), Q(num(rng), 16), Q(num(rng), 32))});
+        return placements.back();
+      },
+      [&] { return mink::Vec3<Q>(Q(num(rng), 64), Q(num(rng), 64), Q(num(rng), 64)); },
+      [&](int i, int v, const mink::Vec3<Q>& x, const mink::Vec3<Q>& y, const mink::Vec3<Q>& placed) {
+        EXPECT_EQ(placed, mink::Vec3<Q>(placements[i].first * x + placements[i].second + y)) << "vertex " << v;
+      },
+      "seed 5201");
   // Exact touching: the L's face x = 2 against a unit box's face x = 2, and 2^-200 apart.
+  const auto ls = mink_test::lBlock();
+  const auto L = mink::TriangleMesh<Q>::fromMesh(ls.verticesAs<Q>(), ls.triangles);
   const auto bs = mink_test::boxShape(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1));
   const auto box = mink::TriangleMesh<Q>::fromMesh(bs.verticesAs<Q>(), bs.triangles);
   mink::MeshOverlap<Q> c(L, box, mink::Mat3<Q>::Identity(), mink::Vec3<Q>(Q(2), Q(0), Q(0)));
@@ -118,25 +141,16 @@ TEST(ExactAndFloatOverlap, GmpqAgainstExactBruteForce) {
 
 // MeshOverlap<float>: decisions exact on the float placements.
 TEST(ExactAndFloatOverlap, FloatAgainstExactBruteForce) {
-  const auto ts = mink_test::torus(12, 8), ls = mink_test::lBlock();
-  const auto torus = mink::TriangleMesh<float>::fromMesh(ts.verticesAs<float>(), ts.triangles);
-  const auto L = mink::TriangleMesh<float>::fromMesh(ls.verticesAs<float>(), ls.triangles);
   std::mt19937 rng(5202u);
   std::uniform_real_distribution<float> u(-3.0f, 3.0f);
-  int hits = 0, misses = 0;
-  for (int i = 0; i < 40; ++i) {
-    const Eigen::Matrix3f R = mink_test::randomRotation(rng).cast<float>();
-    mink::MeshOverlap<float> o(torus, L, R, mink::Vec3<float>(u(rng), u(rng), u(rng) / 3));
-    for (int k = 0; k < 4; ++k) {
-      const bool ours = o.overlaps(mink::Vec3<float>(u(rng), u(rng), u(rng)) * 0.25f);
-      std::vector<mink::Vec3<float>> placed;
-      for (int v = 0; v < L.numVertices(); ++v) placed.push_back(o.placedVertexB(v));
-      EXPECT_EQ(ours, bruteForce(torus, placed, L)) << "seed 5202 pose " << i << " y " << k;
-      (ours ? hits : misses)++;
-    }
-  }
-  EXPECT_GT(hits, 0);
-  EXPECT_GT(misses, 0);
+  compareWithBruteForce<float>(
+      40, 4,
+      [&](int) {
+        const Eigen::Matrix3f R = mink_test::randomRotation(rng).cast<float>();
+        return std::make_pair(R, mink::Vec3<float>(u(rng), u(rng), u(rng) / 3));
+      },
+      [&] { return mink::Vec3<float>(mink::Vec3<float>(u(rng), u(rng), u(rng)) * 0.25f); },
+      [](int, int, const mink::Vec3<float>&, const mink::Vec3<float>&, const mink::Vec3<float>&) {}, "seed 5202");
 }
 
 }  // namespace

@@ -15,58 +15,19 @@
 
 #include <gtest/gtest.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/intersections.h>
-
-#include <fcl/geometry/bvh/BVH_model.h>
-#include <fcl/math/bv/OBBRSS.h>
-#include <fcl/narrowphase/collision.h>
-#include <fcl/narrowphase/distance.h>
-
-#include <atomic>
-#include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
-#include <new>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "mink/io/triangle_mesh_io.hpp"
+#include "support/allocation_counter.hpp"
+#include "support/cgal_mesh.hpp"
 #include "support/expect_rejected.hpp"
+#include "support/fcl_mesh.hpp"
 #include "support/mesh_shapes.hpp"
-
-// AddressSanitizer owns operator new/delete: the counting replacement, and the allocation
-// check, exist only in non-ASan builds (as in tests/mdd/allocation_test.cpp).
-#if defined(__SANITIZE_ADDRESS__)
-#define MINK_COUNT_ALLOCATIONS 0
-#else
-#define MINK_COUNT_ALLOCATIONS 1
-#endif
-
-namespace {
-std::atomic<bool> gCounting{false};
-std::atomic<long> gAllocations{0};
-}  // namespace
-
-#if MINK_COUNT_ALLOCATIONS
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void* operator new(std::size_t n) {
-  if (gCounting.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-#endif
+#include "support/paper_shapes.hpp"
 
 namespace {
 
@@ -84,87 +45,10 @@ Mesh scaled(const mink_test::MeshShape& s, double factor) {
 }
 Mesh shipped(const std::string& f) { return mink::io::readTriangleMesh<double>(std::string(MINK_TEST_DATA_DIR) + "/" + f); }
 
-// ---- references ------------------------------------------------------------------------
+using mink_test::bruteForceBoundariesMeet;
+using mink_test::FclPair;
 
-std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fclModel(const Mesh& m) {
-  auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-  std::vector<fcl::Vector3d> pts(m.vertices().begin(), m.vertices().end());
-  std::vector<fcl::Triangle> tris;
-  for (const auto& t : m.triangles()) tris.emplace_back(t[0], t[1], t[2]);
-  model->beginModel();
-  model->addSubModel(pts, tris);
-  model->endModel();
-  return model;
-}
-
-struct FclPair {
-  std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> a, b;
-  bool collide(const M3& R, const V& t) const {
-    fcl::Transform3d tb = fcl::Transform3d::Identity();
-    tb.linear() = R;
-    tb.translation() = t;
-    fcl::CollisionObjectd oa(a, fcl::Transform3d::Identity()), ob(b, tb);
-    fcl::CollisionRequestd request;
-    fcl::CollisionResultd result;
-    fcl::collide(&oa, &ob, request, result);
-    return result.isCollision();
-  }
-  double distance(const M3& R, const V& t) const {
-    fcl::Transform3d tb = fcl::Transform3d::Identity();
-    tb.linear() = R;
-    tb.translation() = t;
-    fcl::CollisionObjectd oa(a, fcl::Transform3d::Identity()), ob(b, tb);
-    fcl::DistanceRequestd request;
-    fcl::DistanceResultd result;
-    fcl::distance(&oa, &ob, request, result);
-    return result.min_distance;
-  }
-};
-
-using Epick = CGAL::Epick;
-
-// Exact: does any triangle of A meet any triangle of B, B's corners given (brute force,
-// CGAL's exact predicates, box prefilter)?
-bool bruteForceBoundariesMeet(const Mesh& A, const std::vector<V>& bPoints, const Mesh& B) {
-  auto P = [](const V& p) { return Epick::Point_3(p.x(), p.y(), p.z()); };
-  std::vector<Epick::Triangle_3> ta, tb;
-  std::vector<CGAL::Bbox_3> ba, bb;
-  for (const auto& t : A.triangles()) ta.emplace_back(P(A.vertex(t[0])), P(A.vertex(t[1])), P(A.vertex(t[2])));
-  for (const auto& t : B.triangles()) tb.emplace_back(P(bPoints[t[0]]), P(bPoints[t[1]]), P(bPoints[t[2]]));
-  for (const auto& t : ta) ba.push_back(t.bbox());
-  for (const auto& t : tb) bb.push_back(t.bbox());
-  for (std::size_t i = 0; i < ta.size(); ++i)
-    for (std::size_t j = 0; j < tb.size(); ++j)
-      if (CGAL::do_overlap(ba[i], bb[j]) && CGAL::do_intersect(ta[i], tb[j])) return true;
-  return false;
-}
-
-// CGAL's exact point location in A.
-class CgalInside {
- public:
-  using SM = CGAL::Surface_mesh<Epick::Point_3>;
-  explicit CgalInside(const Mesh& m) {
-    std::vector<SM::Vertex_index> vi;
-    for (const V& p : m.vertices()) vi.push_back(mesh_.add_vertex(Epick::Point_3(p.x(), p.y(), p.z())));
-    for (const auto& t : m.triangles()) mesh_.add_face(vi[t[0]], vi[t[1]], vi[t[2]]);
-    side_ = std::make_unique<CGAL::Side_of_triangle_mesh<SM, Epick>>(mesh_);
-  }
-  bool inside(const V& p) const { return (*side_)(Epick::Point_3(p.x(), p.y(), p.z())) == CGAL::ON_BOUNDED_SIDE; }
-
- private:
-  SM mesh_;
-  std::unique_ptr<CGAL::Side_of_triangle_mesh<SM, Epick>> side_;
-};
-
-M3 randomRotation(std::mt19937& rng) {
-  std::normal_distribution<double> n(0.0, 1.0);
-  return Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().toRotationMatrix();
-}
-
-V randomUnit(std::mt19937& rng) {
-  std::normal_distribution<double> n(0.0, 1.0);
-  return V(n(rng), n(rng), n(rng)).normalized();
-}
+using mink_test::randomRotation;
 
 // ---- random poses against FCL ------------------------------------------------------
 
@@ -174,8 +58,8 @@ struct Tally {
 
 // One query: mink's answer against FCL (or, for containment, CGAL's point location), the
 // exact brute force deciding any disagreement.
-void checkQuery(mink::MeshOverlap<double>& o, const FclPair& fcl, const CgalInside& insideA, const CgalInside& insideB,
-                const V& y, const std::string& id, Tally& tally) {
+void checkQuery(mink::MeshOverlap<double>& o, FclPair& fcl, const mink_test::CgalPointLocation& inA,
+                const mink_test::CgalPointLocation& inB, const V& y, const std::string& id, Tally& tally) {
   const bool ours = o.overlaps(y);
   const mink::OverlapResult r = o.result();
   const Mesh &A = o.meshA(), &B = o.meshB();
@@ -185,9 +69,10 @@ void checkQuery(mink::MeshOverlap<double>& o, const FclPair& fcl, const CgalInsi
     ++tally.contained;
     // Independent check of the witness: CGAL's location of the vertex in the other solid
     // (A in B + y: moved back into B's frame, in double: a far-from-boundary witness).
-    const bool ok = r.status == OverlapStatus::BInsideA
-                        ? insideA.inside(placed[r.vertex])
-                        : insideB.inside(o.rotation().transpose() * (A.vertex(r.vertex) - o.translation() - y));
+    const bool ok = (r.status == OverlapStatus::BInsideA
+                         ? inA(placed[r.vertex])
+                         : inB(o.rotation().transpose() * (A.vertex(r.vertex) - o.translation() - y))) ==
+                    mink::PointLocation::Inside;
     if (!ok && tally.failures++ < 5) ADD_FAILURE() << id << ": containment witness " << r.vertex << " not confirmed";
     return;
   }
@@ -218,8 +103,8 @@ void runPairs(const std::vector<PairCase>& cases, unsigned seed, int ysPerPose) 
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (const PairCase& c : cases) {
     SCOPED_TRACE(c.name);
-    const FclPair fcl{fclModel(c.A), fclModel(c.B)};
-    const CgalInside insideA(c.A), insideB(c.B);
+    FclPair fcl(c.A, c.B);
+    const mink_test::CgalPointLocation insideA(c.A), insideB(c.B);
     const auto& ta = c.A.sphereTree();
     const auto& tb = c.B.sphereTree();
     const double ra = ta.radius(0), rb = tb.radius(0);
@@ -227,12 +112,12 @@ void runPairs(const std::vector<PairCase>& cases, unsigned seed, int ysPerPose) 
     for (int i = 0; i < c.poses; ++i) {
       const M3 R = randomRotation(rng);
       // B's root centre placed at a random distance from A's: from deep inside to apart.
-      const V t = ta.centre(0) - R * tb.centre(0) + randomUnit(rng) * (ra + rb) * (0.05 + 1.1 * u(rng));
+      const V t = ta.centre(0) - R * tb.centre(0) + mink_test::randomUnitVector(rng) * (ra + rb) * (0.05 + 1.1 * u(rng));
       mink::MeshOverlap<double> o(c.A, c.B, R, t);
       const std::string id = "seed " + std::to_string(seed) + " " + c.name + " pose " + std::to_string(i);
       checkQuery(o, fcl, insideA, insideB, V::Zero(), id, tally);
       for (int k = 0; k < ysPerPose; ++k)
-        checkQuery(o, fcl, insideA, insideB, randomUnit(rng) * 0.3 * (ra + rb) * u(rng), id + " y " + std::to_string(k),
+        checkQuery(o, fcl, insideA, insideB, mink_test::randomUnitVector(rng) * 0.3 * (ra + rb) * u(rng), id + " y " + std::to_string(k),
                    tally);
     }
     std::printf("    %-28s overlap %4d, separate %4d, contained %3d, excluded (FCL tolerance near touching) %d\n",
@@ -343,14 +228,14 @@ TEST(MeshOverlap, PosesAndFreeFunction) {
   const Mesh torus = fromShape(mink_test::torus(12, 8));
   const Mesh L = fromShape(mink_test::lBlock());
   std::mt19937 rng(5104u);
-  const FclPair fcl{fclModel(torus), fclModel(L)};
+  FclPair fcl(torus, L);
   int agree = 0;
   for (int i = 0; i < 100; ++i) {
     mink::Pose<double> pa, pb;
     pa.rotation = randomRotation(rng);
-    pa.translation = randomUnit(rng);
+    pa.translation = mink_test::randomUnitVector(rng);
     pb.rotation = randomRotation(rng);
-    pb.translation = pa.translation + randomUnit(rng) * 3.5 * std::uniform_real_distribution<double>(0, 1)(rng);
+    pb.translation = pa.translation + mink_test::randomUnitVector(rng) * 3.5 * std::uniform_real_distribution<double>(0, 1)(rng);
     const bool ours = mink::meshesOverlap(torus, pa, L, pb);
     mink::MeshOverlap<double> o(torus, pa, L, pb);
     EXPECT_EQ(o.overlaps(), ours);
@@ -369,31 +254,24 @@ TEST(MeshOverlap, PosesAndFreeFunction) {
 }
 
 TEST(MeshOverlap, WarmQueriesDoNotAllocate) {
-  if (!MINK_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counting is off under AddressSanitizer";
+  if (!mink_test::kCountAllocations) GTEST_SKIP() << "allocation counting is off under AddressSanitizer";
   const Mesh torus = fromShape(mink_test::torus(12, 8));
   const Mesh L = fromShape(mink_test::lBlock());
   std::mt19937 rng(5105u);
   mink::MeshOverlap<double> o(torus, L, randomRotation(rng), V(0.3, 0.1, -0.2));
   std::vector<V> ys;
-  for (int i = 0; i < 500; ++i) ys.push_back(randomUnit(rng) * 4.0 * std::uniform_real_distribution<double>(0, 1)(rng));
+  for (int i = 0; i < 500; ++i) ys.push_back(mink_test::randomUnitVector(rng) * 4.0 * std::uniform_real_distribution<double>(0, 1)(rng));
   int hits = 0;
   for (const V& y : ys) hits += o.overlaps(y);  // warm-up
-  gAllocations = 0;
-  gCounting = true;
-  {
-    void* (*volatile allocate)(std::size_t) = &::operator new;  // the counter sees allocations
-    ::operator delete(allocate(8));
-  }
-  gCounting = false;
-  ASSERT_EQ(gAllocations.load(), 1);
-  gAllocations = 0;
-  gCounting = true;
+  ASSERT_TRUE(mink_test::allocationCounterWorks());
+  const M3 R = randomRotation(rng);
   int again = 0;
-  for (const V& y : ys) again += o.overlaps(y);
-  o.setPlacement(randomRotation(rng), V(0.1, 0.2, 0.3));
-  for (const V& y : ys) again += o.overlaps(y);
-  gCounting = false;
-  EXPECT_EQ(gAllocations.load(), 0);
+  const long allocations = mink_test::allocationsDuring([&] {
+    for (const V& y : ys) again += o.overlaps(y);
+    o.setPlacement(R, V(0.1, 0.2, 0.3));
+    for (const V& y : ys) again += o.overlaps(y);
+  });
+  EXPECT_EQ(allocations, 0);
   EXPECT_GT(hits, 0);
   EXPECT_LT(hits, 500);
   EXPECT_GT(again, hits);

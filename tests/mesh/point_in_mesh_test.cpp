@@ -12,10 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
-#include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <array>
 #include <random>
@@ -23,6 +20,7 @@
 #include <vector>
 
 #include "mink/io/triangle_mesh_io.hpp"
+#include "support/cgal_mesh.hpp"
 #include "support/mesh_shapes.hpp"
 
 namespace {
@@ -103,33 +101,9 @@ TEST(PointInMesh, BoxUnionsOnAQuarterGridDouble) { checkBoxUnions<double>(4000, 
 TEST(PointInMesh, BoxUnionsOnAQuarterGridFloat) { checkBoxUnions<float>(1000, 8102u); }
 TEST(PointInMesh, BoxUnionsOnAQuarterGridGmpq) { checkBoxUnions<CGAL::Gmpq>(150, 8103u); }
 
-// CGAL's exact-predicate point location as the reference.
-class CgalSide {
- public:
-  using K = CGAL::Epick;
-  using Mesh = CGAL::Surface_mesh<K::Point_3>;
-  explicit CgalSide(const mink::TriangleMesh<double>& m) {
-    std::vector<Mesh::Vertex_index> vi;
-    for (const V& p : m.vertices()) vi.push_back(mesh_.add_vertex(K::Point_3(p.x(), p.y(), p.z())));
-    for (const auto& t : m.triangles()) mesh_.add_face(vi[t[0]], vi[t[1]], vi[t[2]]);
-    side_ = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, K>>(mesh_);
-  }
-  PointLocation operator()(const V& p) const {
-    switch ((*side_)(K::Point_3(p.x(), p.y(), p.z()))) {
-      case CGAL::ON_BOUNDED_SIDE: return PointLocation::Inside;
-      case CGAL::ON_BOUNDARY: return PointLocation::OnBoundary;
-      default: return PointLocation::Outside;
-    }
-  }
-
- private:
-  Mesh mesh_;
-  std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K>> side_;
-};
-
 void checkAgainstCgal(const mink::TriangleMesh<double>& m, const std::string& what, int randomPoints, unsigned seed) {
   SCOPED_TRACE(what);
-  const CgalSide reference(m);
+  const mink_test::CgalPointLocation reference(m);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const V lo = m.boxMin(), hi = m.boxMax(), pad = 0.05 * (hi - lo);

@@ -24,6 +24,7 @@
 #include "mink/io/triangle_mesh_io.hpp"
 #include "mink/mesh/triangle_mesh.hpp"
 #include "support/mesh_shapes.hpp"
+#include "support/to_rational.hpp"
 
 namespace {
 
@@ -31,12 +32,8 @@ using Q = CGAL::Gmpq;
 using Kq = CGAL::Simple_cartesian<Q>;
 using V = mink::Vec3<double>;
 
-Q toQ(const Q& x) { return x; }
-Q toQ(double x) { return Q(x); }
-template <class T>
-mink::Vec3<Q> toQ3(const mink::Vec3<T>& p) {
-  return mink::Vec3<Q>(toQ(p[0]), toQ(p[1]), toQ(p[2]));
-}
+using mink_test::toQ;
+using mink_test::toQ3;
 
 // Exactly: |p - c|^2 <= r^2.
 template <class T>

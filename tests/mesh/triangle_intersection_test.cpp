@@ -21,6 +21,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "support/to_rational.hpp"
+
 namespace {
 
 using Q = CGAL::Gmpq;
@@ -28,19 +30,7 @@ using K = CGAL::Simple_cartesian<Q>;
 template <class T>
 using V = mink::Vec3<T>;
 
-Q toQ(const Q& x) { return x; }
-Q toQ(float x) { return Q(static_cast<double>(x)); }
-Q toQ(double x) { return Q(x); }
-Q toQ(long double x) {
-  Q sum(0);
-  long double rest = x;
-  for (int i = 0; i < 4 && rest != 0.0L; ++i) {
-    const double hi = static_cast<double>(rest);
-    sum += Q(hi);
-    rest -= static_cast<long double>(hi);
-  }
-  return sum;
-}
+using mink_test::toQ;
 template <class T>
 K::Point_3 P(const V<T>& p) {
   return K::Point_3(toQ(p[0]), toQ(p[1]), toQ(p[2]));

@@ -29,6 +29,7 @@
 #include <CGAL/Gmpz.h>
 
 #include "mink/polyhedron/convex_polyhedron.hpp"
+#include "support/to_rational.hpp"
 
 namespace mink_test {
 
@@ -40,21 +41,7 @@ using mink::Vec3;
 // ---------------------------------------------------------------------------------
 // Exact conversions and printing.
 
-inline Q toQ(const Q& x) { return x; }
-inline Q toQ(double x) { return Q(x); }
-inline Q toQ(float x) { return Q(static_cast<double>(x)); }
-inline Q toQ(long double x) {
-  // A long double is a sum of at most a few doubles; peel them off exactly.
-  Q sum(0);
-  long double rest = x;
-  for (int i = 0; i < 4 && rest != 0.0L; ++i) {
-    const double hi = static_cast<double>(rest);
-    sum += Q(hi);
-    rest -= static_cast<long double>(hi);
-  }
-  if (rest != 0.0L) ADD_FAILURE() << "toQ: long double " << static_cast<double>(x) << " not converted exactly";
-  return sum;
-}
+// toQ: support/to_rational.hpp.
 inline double dbl(const Q& x) { return CGAL::to_double(x); }
 template <class T>
 double dbl(const T& x) {

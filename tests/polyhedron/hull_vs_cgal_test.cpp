@@ -43,6 +43,7 @@
 #include <CGAL/convex_hull_3.h>
 
 #include "mink/polyhedron/convex_polyhedron.hpp"
+#include "support/to_rational.hpp"
 
 #ifdef MINK_SANITIZE_BUILD
 constexpr int kBigN = 10000;   // sanitizer build: 100k-point hulls take too long
@@ -71,20 +72,7 @@ using QK = CGAL::Simple_cartesian<Q>;
 // ---------------------------------------------------------------------------------
 // Exact arithmetic helpers.
 
-Q toQ(const Q& x) { return x; }
-Q toQ(double x) { return Q(x); }
-Q toQ(float x) { return Q(static_cast<double>(x)); }
-Q toQ(long double x) {
-  Q sum(0);
-  long double rest = x;
-  for (int i = 0; i < 4 && rest != 0.0L; ++i) {
-    const double hi = static_cast<double>(rest);
-    sum += Q(hi);
-    rest -= static_cast<long double>(hi);
-  }
-  if (rest != 0.0L) ADD_FAILURE() << "toQ: long double not converted exactly";
-  return sum;
-}
+// toQ: support/to_rational.hpp.
 double dbl(const Q& x) { return CGAL::to_double(x); }
 double dbl(const Z& x) { return CGAL::to_double(x); }
 template <class T>

@@ -91,6 +91,33 @@ inline void scaleExpansion(const std::vector<F>& e, F b, std::vector<F>& h) {
   if (q != F(0) || h.empty()) h.push_back(q);
 }
 
+/// acc += a * b * c exactly (acc non-overlapping, increasing magnitude; zeros dropped):
+/// two-product of a and b, scaled by c, grown into acc term by term. prod, term and tmp
+/// are scratch.
+template <class F>
+inline void addTripleProduct(std::vector<F>& acc, F a, F b, F c, std::vector<F>& prod, std::vector<F>& term,
+                             std::vector<F>& tmp) {
+  if (a == F(0) || b == F(0) || c == F(0)) return;
+  F h, l;
+  twoProduct(a, b, h, l);
+  prod.clear();
+  if (l != F(0)) prod.push_back(l);
+  prod.push_back(h);
+  scaleExpansion(prod, c, term);
+  for (F t : term) {
+    growExpansion(acc, t, tmp);
+    acc.swap(tmp);
+  }
+}
+
+/// The sign of a non-overlapping expansion: that of its largest non-zero component.
+template <class F>
+inline int expansionSign(const std::vector<F>& e) {
+  for (std::size_t i = e.size(); i-- > 0;)
+    if (e[i] != F(0)) return e[i] > F(0) ? 1 : -1;
+  return 0;
+}
+
 template <class F>
 int exactOrient3d(const Vec3<F>& a, const Vec3<F>& b, const Vec3<F>& c, const Vec3<F>& d);
 
@@ -135,27 +162,12 @@ int exactOrient3d(const Vec3<F>& a, const Vec3<F>& b, const Vec3<F>& c, const Ve
   static const int perm[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
   static const int sgn[6] = {1, 1, 1, -1, -1, -1};
   std::vector<F> acc{F(0)}, tmp, prod, term;
-  for (int p = 0; p < 6; ++p) {
+  for (int p = 0; p < 6; ++p)
     for (int x = 0; x < 2; ++x)
       for (int y = 0; y < 2; ++y)
-        for (int z = 0; z < 2; ++z) {
-          const F ux = u[perm[p][0]][x], vy = v[perm[p][1]][y], wz = w[perm[p][2]][z];
-          if (ux == F(0) || vy == F(0) || wz == F(0)) continue;
-          F h, l;
-          twoProduct(ux, vy, h, l);
-          prod.clear();
-          if (l != F(0)) prod.push_back(l);
-          prod.push_back(h);
-          scaleExpansion(prod, F(sgn[p] * wz), term);
-          for (F t : term) {
-            growExpansion(acc, t, tmp);
-            acc.swap(tmp);
-          }
-        }
-  }
-  for (std::size_t i = acc.size(); i-- > 0;)
-    if (acc[i] != F(0)) return acc[i] > F(0) ? 1 : -1;
-  return 0;
+        for (int z = 0; z < 2; ++z)
+          addTripleProduct(acc, u[perm[p][0]][x], v[perm[p][1]][y], F(sgn[p] * w[perm[p][2]][z]), prod, term, tmp);
+  return expansionSign(acc);
 }
 
 /// Exact sign of (bx − ax)(cy − ay) − (by − ay)(cx − ax) by expansion arithmetic: the
@@ -190,9 +202,7 @@ int exactOrient2d(F ax, F ay, F bx, F by, F cx, F cy) {
       add(F(-h));
       add(F(-l));
     }
-  for (std::size_t i = acc.size(); i-- > 0;)
-    if (acc[i] != F(0)) return acc[i] > F(0) ? 1 : -1;
-  return 0;
+  return expansionSign(acc);
 }
 
 // a*b - c*d, each product exact, the difference rounded once (up to one more rounding

@@ -59,6 +59,10 @@ struct OverlapResult {
   bool overlap() const { return status != OverlapStatus::Separate; }
 };
 
+/// One pair (A, B) and one placement of B in A's frame, queried for many translations.
+/// Holds copies of both meshes (cheap: shared bodies) and its own scratch, so one object
+/// serves one thread. Queries neither throw nor check their y (it must be finite and
+/// within ScalarTraits<T>::largestCoordinate(), like every input coordinate).
 template <class T>
 class MeshOverlap {
  public:

@@ -51,24 +51,10 @@ int exactVolumeSign(const std::vector<std::array<int, 3>>& tris, const std::vect
   std::vector<F> acc{F(0)}, tmp, prod, term;
   for (int t : which) {
     const Vec3<F> a = point(tris[t][0]), b = point(tris[t][1]), c = point(tris[t][2]);
-    for (int p = 0; p < 6; ++p) {
-      const F ai = a[perm[p][0]], bj = b[perm[p][1]], ck = c[perm[p][2]];
-      if (ai == F(0) || bj == F(0) || ck == F(0)) continue;
-      F h, l;
-      twoProduct(ai, bj, h, l);
-      prod.clear();
-      if (l != F(0)) prod.push_back(l);
-      prod.push_back(h);
-      scaleExpansion(prod, F(sgn[p] * ck), term);
-      for (F x : term) {
-        growExpansion(acc, x, tmp);
-        acc.swap(tmp);
-      }
-    }
+    for (int p = 0; p < 6; ++p)
+      addTripleProduct(acc, a[perm[p][0]], b[perm[p][1]], F(sgn[p] * c[perm[p][2]]), prod, term, tmp);
   }
-  for (std::size_t i = acc.size(); i-- > 0;)
-    if (acc[i] != F(0)) return acc[i] > F(0) ? 1 : -1;
-  return 0;
+  return expansionSign(acc);
 }
 
 /// Exact sign of 6 · the signed volume of the closed surface made of triangles

@@ -12,6 +12,7 @@
 #include "mink/core/detail/input_checks.hpp"
 #include "mink/core/orientation.hpp"
 #include "mink/mesh/detail/signed_volume.hpp"
+#include "mink/mesh/triangle_intersection.hpp"
 
 namespace mink {
 namespace detail {
@@ -148,17 +149,9 @@ struct TriangleMeshBuilder {
       if (outCount[v] == 0) fail("vertex " + str(v) + " is unreferenced (no triangle uses it)");
   }
 
-  /// An axis along which triangle (a, b, c) projects to a proper triangle (orient2d != 0,
-  /// exactly), or −1 when its corners are collinear.
-  static int projectionAxis(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
-    for (int k = 0; k < 3; ++k)
-      if (orient2d(a, b, c, k) != 0) return k;
-    return -1;
-  }
-
   static void checkCollinear(const std::vector<Vec3<T>>& verts, const std::vector<Tri>& tris) {
     for (std::size_t t = 0; t < tris.size(); ++t)
-      if (projectionAxis(verts[tris[t][0]], verts[tris[t][1]], verts[tris[t][2]]) < 0)
+      if (properAxis(verts[tris[t][0]], verts[tris[t][1]], verts[tris[t][2]]) < 0)
         fail("triangle " + str(static_cast<long long>(t)) + " is degenerate (its corners are collinear)");
   }
 
@@ -205,7 +198,7 @@ struct TriangleMeshBuilder {
       } else if (o > 0) {
         d.edgeKind[e] = EdgeKind::Reflex;
       } else {
-        const int k = projectionAxis(A, B, C);
+        const int k = properAxis(A, B, C);
         if (orient2d(A, B, C, k) == orient2d(A, B, D, k))
           fail("triangles " + str(t1) + " and " + str(t2) + " are folded onto each other across edge " + str(a) + "-" +
                str(b) + " (coplanar, on the same side of it: a dihedral angle of 0)");
