@@ -1,0 +1,298 @@
+// mink/cpd/convex_map.hpp — the convex map C(X) of a closed triangle mesh X: a convex
+// polyhedron whose Gauss map subdivides X's, with correspondence sets back to X, used to
+// find the compatible partners of a direction or an arc without scanning X.
+//
+// Source: Y. Lee, E. Behar, J.-M. Lien, Y. J. Kim, CAD 2016, section 4 (Algorithm 1) and
+// Appendix A.
+//   1. The points: the unit normals of X's faces, and the midpoint of the long arc of every
+//      reflex edge (section 4.2: sub-arcs then have length < π).
+//   2. C(X) is the intersection of the half-spaces tangent to the unit sphere at those
+//      points: the polar dual of their convex hull H (built by ConvexPolyhedron's exact
+//      quickhull), so C(X)'s vertices are H's faces and the Gauss-map cell of a vertex of
+//      C(X) is the cone over a face of H.
+//   3. Correspondence sets, per cell: V̄ — the vertices v of X whose cone of directions in
+//      which v is a local maximum over its star (its Gauss region for a convex vertex;
+//      possibly empty at a saddle) meets the cell; Ē — the convex edges of X whose short
+//      arc meets the cell. (F̄ is not needed: faces are enumerated directly.)
+// The paper claims G(C(X)) subdivides X's Gauss-map arrangement; it does not in general
+// (a Delaunay triangulation of the normals need not keep X's arcs), so mink makes the
+// correspondence conservative instead: a set lists everything whose region merely meets
+// the cell, and every candidate is then decided by the exact compatibility predicates of
+// cpd/convolution.hpp. The map is a search structure in double (slack 1e-7 in its
+// tests), built once per mesh; it never decides a compatibility by itself.
+//
+// Queries (X's frame, any non-zero direction): vertex candidates for a direction d (the v
+// with d in their region), edge candidates for an arc p → q (shorter than π). Each walks
+// from a hint cell (the last answer: frame coherence) to the cell of d. The map is
+// immutable once built and may be shared by threads; the arc query's work space is the
+// caller's (ConvexMap::Walk, one per thread).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mink/core/scalar_traits.hpp"
+#include "mink/mesh/triangle_mesh.hpp"
+#include "mink/polyhedron/convex_polyhedron.hpp"
+
+namespace mink {
+
+template <class T>
+class ConvexMap {
+ public:
+  using V3 = Eigen::Vector3d;
+
+  /// Builds C(X) and its correspondence sets (O(n) cells, each vertex and edge of X
+  /// registered in the few cells its region meets).
+  explicit ConvexMap(const TriangleMesh<T>& X) {
+    std::vector<V3> pts;
+    pts.reserve(static_cast<std::size_t>(X.numTriangles() + X.numEdges() / 4 + 8));
+    for (int t = 0; t < X.numTriangles(); ++t) pts.push_back(unit(X.triangleNormal(t)));
+    for (int e = 0; e < X.numEdges(); ++e) {
+      if (X.edgeKind(e) != EdgeKind::Reflex) continue;
+      const auto tt = X.edgeTriangles(e);
+      const V3 m = -(unit(X.triangleNormal(tt.first)) + unit(X.triangleNormal(tt.second)));
+      if (m.norm() > 0) pts.push_back(m.normalized());  // the long arc's midpoint
+    }
+    // Normals equal to rounding (the two triangles of a flat quad) would make cells of
+    // zero width: the first of each run of near-equal points (in lexicographic order) is
+    // kept. Any subdivision serves: the correspondence sets are conservative.
+    std::sort(pts.begin(), pts.end(), [](const V3& a, const V3& b) {
+      return a[0] < b[0] || (a[0] == b[0] && (a[1] < b[1] || (a[1] == b[1] && a[2] < b[2])));
+    });
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      if (kept == 0 || (pts[i] - pts[kept - 1]).norm() > 1e-12) pts[kept++] = pts[i];
+    pts.resize(kept);
+    H_ = std::make_shared<const ConvexPolyhedron<double>>(ConvexPolyhedron<double>::fromPoints(pts));
+    const int nf = H_->numFaces();
+    std::vector<std::vector<int>> vsets(static_cast<std::size_t>(nf)), esets(static_cast<std::size_t>(nf));
+    Walk walk;
+    for (int v = 0; v < X.numVertices(); ++v) registerVertex(X, v, walk, vsets);
+    for (int e = 0; e < X.numEdges(); ++e)
+      if (X.edgeKind(e) == EdgeKind::Convex) registerEdge(X, e, walk, esets);
+    pack(vsets, vStart_, vItems_);
+    pack(esets, eStart_, eItems_);
+  }
+
+  /// The polytope H whose faces are the cells (the polar dual of C(X)).
+  const ConvexPolyhedron<double>& hull() const { return *H_; }
+  int numCells() const { return H_->numFaces(); }
+
+  /// The cell whose cone holds direction d (walked from `hint`, a cell or −1).
+  int locate(const V3& d, int hint = -1) const {
+    const ConvexPolyhedron<double>& H = *H_;
+    int f = hint >= 0 && hint < H.numFaces() ? hint : 0;
+    const int cap = 4 * H.numFaces() + 16;
+    for (int step = 0; step < cap; ++step) {
+      int next = -1, least = -1;
+      double worst = 0.0, smallest = 1e300;
+      const int s = H.faceStart(f), n = H.faceSize(f);
+      for (int k = 0; k < n; ++k) {
+        const int h = s + k;
+        const double side = H.vertex(H.heOrigin(h)).cross(H.vertex(H.heTarget(h))).dot(d);
+        if (side < worst) worst = side, next = H.heFace(H.heTwin(h));
+        if (side < smallest) smallest = side, least = H.heFace(H.heTwin(h));
+      }
+      // A sliver cell (corners equal to rounding) passes every side test for its antipode
+      // too: a cell holds d only if d is on its side of the origin.
+      if (next < 0 && !facesToward(f, d)) next = least;
+      if (next < 0) return f;
+      f = next;
+    }
+    // The walk cycled (d on cell boundaries within rounding): the best cell by scanning.
+    int best = 0;
+    double bestSide = -1e300;
+    for (int g = 0; g < H.numFaces(); ++g) {
+      double m = 1e300;
+      const int s = H.faceStart(g), n = H.faceSize(g);
+      if (!facesToward(g, d)) continue;
+      for (int k = 0; k < n; ++k)
+        m = std::min(m, H.vertex(H.heOrigin(s + k)).cross(H.vertex(H.heTarget(s + k))).dot(d));
+      if (m > bestSide) bestSide = m, best = g;
+    }
+    return best;
+  }
+
+  /// Is d on cell f's side of the origin? (d in the cone over f is a non-negative
+  /// combination of its corners, so some corner has a positive dot product with it.)
+  bool facesToward(int f, const V3& d) const {
+    const int s = H_->faceStart(f), n = H_->faceSize(f);
+    for (int k = 0; k < n; ++k)
+      if (H_->vertex(H_->heOrigin(s + k)).dot(d) > 0) return true;
+    return false;
+  }
+
+  /// V̄(cell): vertices of X whose local-maximum cone meets the cell.
+  IndexRange vertices(int cell) const { return range(vStart_, vItems_, cell); }
+  /// Ē(cell): convex edges of X whose short Gauss arc meets the cell.
+  IndexRange edges(int cell) const { return range(eStart_, eItems_, cell); }
+
+  /// Work space of the breadth-first walks (marks per cell with O(1) clearing).
+  struct Walk {
+    std::vector<unsigned> marks;
+    unsigned epoch = 0;
+    std::vector<int> stack;
+    void begin(int cells) {
+      if (marks.size() != static_cast<std::size_t>(cells)) marks.assign(static_cast<std::size_t>(cells), 0u), epoch = 0;
+      if (++epoch == 0) std::fill(marks.begin(), marks.end(), 0u), epoch = 1;
+      stack.clear();
+    }
+    bool mark(int f) {
+      if (marks[static_cast<std::size_t>(f)] == epoch) return false;
+      marks[static_cast<std::size_t>(f)] = epoch;
+      return true;
+    }
+  };
+
+  /// Calls visit(cell) for every cell the arc p → q (unit vectors, not antipodal) meets,
+  /// starting at `hint` (updated to the cell of p).
+  template <class Visit>
+  void forCellsOnArc(const V3& p, const V3& q, int& hint, Walk& walk, Visit&& visit) const {
+    hint = locate(p, hint);
+    walk.begin(H_->numFaces());
+    walk.stack.push_back(hint);
+    walk.mark(hint);
+    while (!walk.stack.empty()) {
+      const int f = walk.stack.back();
+      walk.stack.pop_back();
+      if (f != hint && !arcMeetsCell(p, q, f)) continue;
+      visit(f);
+      const int s = H_->faceStart(f), n = H_->faceSize(f);
+      for (int k = 0; k < n; ++k) {
+        const int g = H_->heFace(H_->heTwin(s + k));
+        if (walk.mark(g)) walk.stack.push_back(g);
+      }
+    }
+  }
+
+  static V3 unit(const Vec3<T>& n) {
+    const V3 d(detail::toDouble(n[0]), detail::toDouble(n[1]), detail::toDouble(n[2]));
+    const double l = d.norm();
+    return l > 0 ? V3(d / l) : d;
+  }
+
+ private:
+  static constexpr double kSlack = 1e-7;
+
+  static IndexRange range(const std::vector<int>& start, const std::vector<int>& items, int i) {
+    return IndexRange(items.data() + start[static_cast<std::size_t>(i)], items.data() + start[static_cast<std::size_t>(i) + 1]);
+  }
+  static void pack(const std::vector<std::vector<int>>& sets, std::vector<int>& start, std::vector<int>& items) {
+    start.assign(sets.size() + 1, 0);
+    for (std::size_t i = 0; i < sets.size(); ++i) start[i + 1] = start[i] + static_cast<int>(sets[i].size());
+    items.clear();
+    items.reserve(static_cast<std::size_t>(start.back()));
+    for (const auto& s : sets) items.insert(items.end(), s.begin(), s.end());
+  }
+
+  /// Does the cone over cell f meet {d : d · e <= slack |e| for every e in dirs}? Clips the
+  /// cell's corner polygon by each half-space (conservatively: the corners are unit
+  /// vectors and the clipped points shorter, for which the constant slack is looser).
+  bool cellMeetsCone(int f, const std::vector<V3>& dirs) {
+    poly_.clear();
+    const int s = H_->faceStart(f), n = H_->faceSize(f);
+    for (int k = 0; k < n; ++k) poly_.push_back(H_->vertex(H_->heOrigin(s + k)).normalized());
+    for (const V3& e : dirs) {
+      clipped_.clear();
+      const std::size_t m = poly_.size();
+      for (std::size_t i = 0; i < m; ++i) {
+        const V3& a = poly_[i];
+        const V3& b = poly_[(i + 1) % m];
+        const double da = a.dot(e) - kSlack, db = b.dot(e) - kSlack;
+        if (da <= 0) clipped_.push_back(a);
+        if ((da < 0 && db > 0) || (da > 0 && db < 0)) clipped_.push_back(a + (da / (da - db)) * (b - a));
+      }
+      poly_.swap(clipped_);
+      if (poly_.empty()) return false;
+    }
+    return true;
+  }
+
+  /// Does the arc p → q (the cone over the chord) meet the cone over cell f?
+  bool arcMeetsCell(const V3& p, const V3& q, int f) const {
+    double lo = 0.0, hi = 1.0;
+    const int s = H_->faceStart(f), n = H_->faceSize(f);
+    for (int k = 0; k < n; ++k) {
+      V3 c = H_->vertex(H_->heOrigin(s + k)).cross(H_->vertex(H_->heTarget(s + k)));
+      const double l = c.norm();
+      if (!(l > kSlack)) continue;  // a sliver side (corners within rounding): no constraint
+      c /= l;
+      // Inside the cell: c · x >= −slack along x = p + t (q − p).
+      const double a = c.dot(p) + kSlack, b = c.dot(q - p);
+      if (b == 0) {
+        if (a < 0) return false;
+      } else if (b > 0) {
+        lo = std::max(lo, -a / b);
+      } else {
+        hi = std::min(hi, -a / b);
+      }
+      if (lo > hi) return false;
+    }
+    return true;
+  }
+
+  /// Registers v in every cell its local-maximum cone {d : d · (w − v) <= 0} meets.
+  void registerVertex(const TriangleMesh<T>& X, int v, Walk& walk, std::vector<std::vector<int>>& sets) {
+    dirs_.clear();
+    const V3 pv = toD(X.vertex(v));
+    for (int w : X.vertexNeighbors(v)) {
+      const V3 e = toD(X.vertex(w)) - pv;
+      const double l = e.norm();
+      if (l > 0) dirs_.push_back(e / l);
+    }
+    // The cone's extreme rays are among the cross products of two constraint normals.
+    rays_.clear();
+    for (std::size_t i = 0; i < dirs_.size(); ++i)
+      for (std::size_t j = i + 1; j < dirs_.size(); ++j) {
+        V3 r = dirs_[i].cross(dirs_[j]);
+        const double l = r.norm();
+        if (!(l > 1e-12)) continue;
+        r /= l;
+        for (const V3& cand : {r, V3(-r)}) {
+          bool ok = true;
+          for (const V3& e : dirs_) ok = ok && cand.dot(e) <= kSlack;
+          if (ok) rays_.push_back(cand);
+        }
+      }
+    if (rays_.empty()) return;  // no direction makes v a local maximum (a saddle)
+    walk.begin(H_->numFaces());
+    for (const V3& r : rays_) {
+      const int seed = locate(r, -1);
+      if (!walk.mark(seed)) continue;
+      walk.stack.push_back(seed);
+      while (!walk.stack.empty()) {
+        const int f = walk.stack.back();
+        walk.stack.pop_back();
+        if (f != seed && !cellMeetsCone(f, dirs_)) continue;
+        sets[static_cast<std::size_t>(f)].push_back(v);
+        const int s = H_->faceStart(f), n = H_->faceSize(f);
+        for (int k = 0; k < n; ++k) {
+          const int g = H_->heFace(H_->heTwin(s + k));
+          if (walk.mark(g)) walk.stack.push_back(g);
+        }
+      }
+    }
+  }
+
+  /// Registers convex edge e in every cell its short arc meets.
+  void registerEdge(const TriangleMesh<T>& X, int e, Walk& walk, std::vector<std::vector<int>>& sets) {
+    const auto tt = X.edgeTriangles(e);
+    const V3 p = unit(X.triangleNormal(tt.first)), q = unit(X.triangleNormal(tt.second));
+    int hint = -1;
+    forCellsOnArc(p, q, hint, walk, [&](int f) { sets[static_cast<std::size_t>(f)].push_back(e); });
+  }
+
+  static V3 toD(const Vec3<T>& x) { return V3(detail::toDouble(x[0]), detail::toDouble(x[1]), detail::toDouble(x[2])); }
+
+  std::shared_ptr<const ConvexPolyhedron<double>> H_;
+  std::vector<int> vStart_, vItems_, eStart_, eItems_;
+  // Build-time scratch.
+  std::vector<V3> poly_, clipped_, dirs_, rays_;
+};
+
+}  // namespace mink

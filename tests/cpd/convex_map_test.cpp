@@ -1,0 +1,119 @@
+// tests/cpd/convex_map_test.cpp — mink/cpd/convex_map.hpp against brute force: the cell a
+// direction is located in holds it (every side of its cone faces it); the correspondence
+// sets are complete — every vertex v of the mesh with a direction d in its local-maximum
+// cone (d · (w − v) <= 0 for all neighbours w, decided exactly in CGAL::Gmpq) is listed in
+// the cell of d, and every convex edge whose short Gauss arc crosses a query arc (exact arc
+// test in Gmpq) is listed in a cell the arc meets. Random directions and arcs (fixed seed),
+// including the face normals themselves (cell corners: the boundary cases).
+#include "mink/cpd/convex_map.hpp"
+
+#include <gtest/gtest.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "mink/gauss_map/arc_intersection.hpp"
+#include "support/mesh_shapes.hpp"
+
+namespace {
+
+using V = Eigen::Vector3d;
+using Q = CGAL::Gmpq;
+using Vq = mink::Vec3<Q>;
+using Mesh = mink::TriangleMesh<double>;
+
+Vq exact(const V& v) { return Vq(Q(v.x()), Q(v.y()), Q(v.z())); }
+
+bool inLocalMaximumCone(const Mesh& X, int v, const V& d) {
+  const Vq dq = exact(d), pv = exact(X.vertex(v));
+  for (int w : X.vertexNeighbors(v))
+    if (dq.dot(exact(X.vertex(w)) - pv) > 0) return false;
+  return true;
+}
+
+std::vector<mink_test::MeshShape> shapes() {
+  return {mink_test::lBlock(), mink_test::uBlock(), mink_test::torus(16, 12), mink_test::cubeWithHole(),
+          mink_test::starPrism(), mink_test::cup(), mink_test::spoon(), mink_test::axes()};
+}
+
+TEST(ConvexMap, LocatedCellHoldsTheDirection) {
+  std::mt19937 rng(77);
+  std::normal_distribution<double> N;
+  for (const auto& s : shapes()) {
+    SCOPED_TRACE(s.name);
+    const Mesh X = Mesh::fromMesh(s.verticesAs<double>(), s.triangles);
+    const mink::ConvexMap<double> map(X);
+    const auto& H = map.hull();
+    int hint = -1;
+    for (int k = 0; k < 500; ++k) {
+      const V d = V(N(rng), N(rng), N(rng)).normalized();
+      hint = map.locate(d, k % 2 ? hint : -1);
+      for (int i = 0; i < H.faceSize(hint); ++i) {
+        const int h = H.faceStart(hint) + i;
+        EXPECT_GE(H.vertex(H.heOrigin(h)).cross(H.vertex(H.heTarget(h))).dot(d), -1e-12);
+      }
+    }
+  }
+}
+
+TEST(ConvexMap, VertexSetsAreComplete) {
+  std::mt19937 rng(78);
+  std::normal_distribution<double> N;
+  for (const auto& s : shapes()) {
+    SCOPED_TRACE(s.name);
+    const Mesh X = Mesh::fromMesh(s.verticesAs<double>(), s.triangles);
+    const mink::ConvexMap<double> map(X);
+    std::vector<V> dirs;
+    for (int t = 0; t < X.numTriangles(); ++t) dirs.push_back(mink::ConvexMap<double>::unit(X.triangleNormal(t)));
+    for (int k = 0; k < 300; ++k) dirs.push_back(V(N(rng), N(rng), N(rng)).normalized());
+    int checked = 0;
+    for (const V& d : dirs) {
+      const int cell = map.locate(d);
+      std::set<int> listed(map.vertices(cell).begin(), map.vertices(cell).end());
+      for (int v = 0; v < X.numVertices(); ++v) {
+        if (!inLocalMaximumCone(X, v, d)) continue;
+        ++checked;
+        EXPECT_TRUE(listed.count(v)) << "vertex " << v << " missing";
+      }
+    }
+    EXPECT_GT(checked, 0);
+  }
+}
+
+TEST(ConvexMap, EdgeSetsAreComplete) {
+  std::mt19937 rng(79);
+  std::normal_distribution<double> N;
+  for (const auto& s : shapes()) {
+    SCOPED_TRACE(s.name);
+    const Mesh X = Mesh::fromMesh(s.verticesAs<double>(), s.triangles);
+    const mink::ConvexMap<double> map(X);
+    mink::ConvexMap<double>::Walk walk;
+    int crossings = 0;
+    for (int k = 0; k < 200; ++k) {
+      const V p = V(N(rng), N(rng), N(rng)).normalized();
+      V q = (p + 0.6 * V(N(rng), N(rng), N(rng)).normalized()).normalized();
+      if (p.dot(q) < -0.9) continue;
+      std::set<int> listed;
+      int hint = -1;
+      map.forCellsOnArc(p, q, hint, walk, [&](int cell) {
+        for (int e : map.edges(cell)) listed.insert(e);
+      });
+      for (int e = 0; e < X.numEdges(); ++e) {
+        if (X.edgeKind(e) != mink::EdgeKind::Convex) continue;
+        const auto tt = X.edgeTriangles(e);
+        const auto c = mink::classifyArcs(exact(p), exact(q), mink::Vec3<Q>(X.triangleNormal(tt.first).cast<Q>()),
+                                          mink::Vec3<Q>(X.triangleNormal(tt.second).cast<Q>()));
+        if (c == mink::ArcIntersection::None) continue;
+        ++crossings;
+        EXPECT_TRUE(listed.count(e)) << "edge " << e << " missing";
+      }
+    }
+    EXPECT_GT(crossings, 0);
+  }
+}
+
+}  // namespace
