@@ -1,0 +1,284 @@
+// mink/cpd/local_minkowski_sum.hpp — the boundary of M = poseA(A) ⊕ −poseB(B) inside a
+// query ball, for two closed non-convex triangle meshes, kept between calls.
+//
+// Source: Y. Lee, E. Behar, J.-M. Lien, Y. J. Kim, "Continuous penetration depth
+// computation for rigid models using dynamic Minkowski sums", CAD 2016, section 5.
+//   1. Culling (section 5.1, Theorem 2): the two bounding-sphere hierarchies are walked
+//      in pairs; a node pair whose sphere S_A ⊕ −S_B misses the query region is dropped
+//      with everything below it; at two leaves the tight sphere of t_A ⊕ −t_B decides.
+//   2. Convolution (section 3.2): the feature pairs of the surviving triangle pairs (FV,
+//      VF, EE) that are compatible (cpd/convolution.hpp) and whose facet meets the region.
+//   3. Trimming (cpd/detail/trimming.hpp): the facets cut where they cross, each piece
+//      classified by a collision test; the pieces on ∂M that meet the ball are the patch.
+// The query region is the ball and, for the trimming, the axis-aligned box around it in
+// A's frame (pieces are cut at the box, whose faces are planes; the patch keeps every
+// piece that meets the ball, so a triangle may reach past the sphere, never past the box).
+//
+// Frames: poses and the ball are in the world frame; the work is done in A's frame (B
+// placed in it by the relative pose, once per call), and the patch is returned in the
+// world frame.
+#pragma once
+
+#include <algorithm>
+#include <memory>
+#include <cmath>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "mink/core/error.hpp"
+#include "mink/cpd/convex_map.hpp"
+#include "mink/cpd/convolution.hpp"
+#include "mink/cpd/detail/trimming.hpp"
+#include "mink/cpd/minkowski_patch.hpp"
+#include "mink/mesh/detail/enclosing_sphere.hpp"
+#include "mink/mesh/mesh_overlap.hpp"
+#include "mink/mesh/triangle_mesh.hpp"
+
+namespace mink {
+
+/// How LocalMinkowskiSum finds the convolution facets in the ball.
+enum class LocalSumMethod {
+  BruteForce,  ///< every feature pair of A and B tested (the paper's "brute force" column)
+  SphereTree,  ///< culling with the two bounding-sphere hierarchies, from scratch each call
+  ConvexMaps,  ///< each feature's compatible partners located in the other's convex map,
+               ///< walked from where they were in the last call (the default)
+};
+
+template <class T>
+struct LocalMinkowskiSumOptions {
+  LocalSumMethod method = LocalSumMethod::ConvexMaps;
+};
+
+namespace detail {
+
+template <class T>
+void checkPoseForCpd(const Pose<T>& pose, const char* name) {
+  checkRigidPlacement(pose.rotation, pose.translation, "LocalMinkowskiSum", name);
+}
+
+}  // namespace detail
+
+template <class T>
+class LocalMinkowskiSum {
+ public:
+  /// One object per pair of meshes; both must outlive it.
+  LocalMinkowskiSum(const TriangleMesh<T>& A, const TriangleMesh<T>& B, const LocalMinkowskiSumOptions<T>& options = {})
+      : A_(A), B_(B), options_(options), frame_(A, B), overlap_(A, B, Mat3<T>::Identity(), Vec3<T>::Zero()) {}
+
+  /// The patch of ∂M inside the ball (centre, radius), world frame. Throws InvalidInput for
+  /// a non-finite centre, a radius <= 0 or not finite, or a pose that is not rigid.
+  const MinkowskiPatch<T>& update(const Pose<T>& poseA, const Pose<T>& poseB, const Vec3<T>& centre, T radius) {
+    detail::checkPoseForCpd(poseA, "poseA");
+    detail::checkPoseForCpd(poseB, "poseB");
+    for (int i = 0; i < 3; ++i)
+      if (!ScalarTraits<T>::isFinite(centre[i]))
+        throw InvalidInput("LocalMinkowskiSum::update: the ball's centre is not finite");
+    if (!(radius > T(0)) || !ScalarTraits<T>::isFinite(radius))
+      throw InvalidInput("LocalMinkowskiSum::update: the ball's radius must be positive and finite");
+    // B in A's frame; M in A's frame is RA^T times M in the world frame (the translations
+    // cancel in a − b up to tB − tA).
+    const Mat3<T> RAt = poseA.rotation.transpose();
+    const Mat3<T> R = RAt * poseB.rotation;
+    const Vec3<T> t = RAt * (poseB.translation - poseA.translation);
+    frame_.place(R, t);
+    overlap_.setPlacement(R, t);
+    region_.ball = true;
+    region_.centre = RAt * centre;
+    region_.radius = radius;
+    region_.bounded = true;
+    for (int a = 0; a < 3; ++a) {
+      region_.lo[a] = region_.centre[a] - radius;
+      region_.hi[a] = region_.centre[a] + radius;
+      if constexpr (!ScalarTraits<T>::isExact) {
+        // Rounded outward, so that the box holds the ball.
+        region_.lo[a] = std::nextafter(region_.lo[a], -std::numeric_limits<T>::infinity());
+        region_.hi[a] = std::nextafter(region_.hi[a], std::numeric_limits<T>::infinity());
+      }
+    }
+    patch_.clear();
+    patch_.rebuilt = true;
+    gather();
+    trimmer_.run(frame_, facets_, region_, overlap_, patch_);
+    for (Vec3<T>& v : patch_.vertices) v = poseA.rotation * v;
+    return patch_;
+  }
+
+  /// The last patch.
+  const MinkowskiPatch<T>& patch() const { return patch_; }
+
+  /// The compatible pairs whose facets met the region in the last update, sorted by key.
+  const std::vector<ConvolutionPair>& facets() const { return facets_; }
+
+ private:
+  /// facets_ := the compatible pairs whose facet meets the region box, sorted.
+  void gather() {
+    facets_.clear();
+    seen_.clear();
+    if (options_.method == LocalSumMethod::ConvexMaps) {
+      viaConvexMaps();
+    } else if (options_.method == LocalSumMethod::BruteForce) {
+      for (int f = 0; f < A_.numTriangles(); ++f)
+        for (int v = 0; v < B_.numVertices(); ++v) consider({ConvolutionType::FV, f, v, 0});
+      for (int u = 0; u < A_.numVertices(); ++u)
+        for (int g = 0; g < B_.numTriangles(); ++g) consider({ConvolutionType::VF, u, g, 0});
+      for (int e = 0; e < A_.numEdges(); ++e)
+        for (int ep = 0; ep < B_.numEdges(); ++ep) consider({ConvolutionType::EE, e, ep, 0});
+    } else {
+      cull();
+    }
+    std::sort(facets_.begin(), facets_.end(),
+              [](const ConvolutionPair& x, const ConvolutionPair& y) { return x.key() < y.key(); });
+  }
+
+  /// Every feature's compatible partners from the other mesh's convex map: FV from A's
+  /// faces in C(B), VF from B's faces in C(A), EE from A's convex edges' arcs in C(B),
+  /// each located from its cell of the last call. Complete: every compatible pair is in
+  /// the correspondence set of the cell holding its direction (cpd/convex_map.hpp).
+  void viaConvexMaps() {
+    using V3 = Eigen::Vector3d;
+    if (!mapA_) mapA_ = std::make_unique<ConvexMap<T>>(A_);
+    if (!mapB_) mapB_ = std::make_unique<ConvexMap<T>>(B_);
+    hintFA_.resize(static_cast<std::size_t>(A_.numTriangles()), -1);
+    hintFB_.resize(static_cast<std::size_t>(B_.numTriangles()), -1);
+    hintEA_.resize(static_cast<std::size_t>(A_.numEdges()), -1);
+    Eigen::Matrix3d R;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) R(i, j) = detail::toDouble(frame_.R()(i, j));
+    const Eigen::Matrix3d Rt = R.transpose();
+    for (int f = 0; f < A_.numTriangles(); ++f) {
+      int& h = hintFA_[static_cast<std::size_t>(f)];
+      h = mapB_->locate(V3(-(Rt * ConvexMap<T>::unit(A_.triangleNormal(f)))), h);
+      for (int v : mapB_->vertices(h)) consider({ConvolutionType::FV, f, v, 0});
+    }
+    for (int g = 0; g < B_.numTriangles(); ++g) {
+      int& h = hintFB_[static_cast<std::size_t>(g)];
+      h = mapA_->locate(V3(-(R * ConvexMap<T>::unit(B_.triangleNormal(g)))), h);
+      for (int u : mapA_->vertices(h)) consider({ConvolutionType::VF, u, g, 0});
+    }
+    edgeMarks_.assign(static_cast<std::size_t>(B_.numEdges()), -1);
+    for (int e = 0; e < A_.numEdges(); ++e) {
+      if (A_.edgeKind(e) != EdgeKind::Convex) continue;
+      const auto tt = A_.edgeTriangles(e);
+      const V3 p = -(Rt * ConvexMap<T>::unit(A_.triangleNormal(tt.first)));
+      const V3 q = -(Rt * ConvexMap<T>::unit(A_.triangleNormal(tt.second)));
+      mapB_->forCellsOnArc(p, q, hintEA_[static_cast<std::size_t>(e)], walk_, [&](int cell) {
+        for (int ep : mapB_->edges(cell)) {
+          int& m = edgeMarks_[static_cast<std::size_t>(ep)];
+          if (m == e) continue;
+          m = e;
+          consider({ConvolutionType::EE, e, ep, 0});
+        }
+      });
+    }
+  }
+
+  /// A candidate pair: kept if compatible and its facet's box meets the region box.
+  void consider(ConvolutionPair c) {
+    ++patch_.candidatePairs;
+    if (!facetBoxMeetsRegion(c) || !frame_.compatible(c)) return;
+    facets_.push_back(c);
+  }
+
+  bool facetBoxMeetsRegion(const ConvolutionPair& c) const {
+    std::array<std::array<int, 2>, 3> tris[2];
+    const int n = frame_.facetTriangles(c, tris);
+    Vec3<T> lo, hi;
+    bool first = true;
+    for (int t = 0; t < n; ++t)
+      for (const auto& ij : tris[t]) {
+        const Vec3<T> x = frame_.m(ij[0], ij[1]);
+        if (first) {
+          lo = hi = x;
+          first = false;
+        } else {
+          lo = lo.cwiseMin(x);
+          hi = hi.cwiseMax(x);
+        }
+      }
+    for (int a = 0; a < 3; ++a)
+      if (lo[a] > region_.hi[a] || hi[a] < region_.lo[a]) return false;
+    return true;
+  }
+
+  /// Squared distance from x to the region box <= r²?
+  bool sphereMeetsRegion(const Vec3<T>& x, const T& r) const {
+    T d2 = T(0);
+    for (int a = 0; a < 3; ++a) {
+      if (x[a] < region_.lo[a]) d2 += (region_.lo[a] - x[a]) * (region_.lo[a] - x[a]);
+      if (x[a] > region_.hi[a]) d2 += (x[a] - region_.hi[a]) * (x[a] - region_.hi[a]);
+    }
+    return d2 <= r * r;
+  }
+
+  /// Theorem 2 culling over the two sphere trees, then the feature pairs of the leaves.
+  void cull() {
+    const SphereTree<T>& ta = A_.sphereTree();
+    const SphereTree<T>& tb = B_.sphereTree();
+    T slack = T(0);
+    if constexpr (!ScalarTraits<T>::isExact) {
+      // The rounding of R c + t for B's centres, as a length (a few ulps of the scene).
+      slack = T(64) * ScalarTraits<T>::epsilon() *
+              (A_.extent() + B_.extent() + frame_.t().cwiseAbs().maxCoeff() + region_.centre.cwiseAbs().maxCoeff());
+    }
+    stack_.clear();
+    stack_.push_back({SphereTree<T>::root(), SphereTree<T>::root()});
+    while (!stack_.empty()) {
+      const auto [na, nb] = stack_.back();
+      stack_.pop_back();
+      ++patch_.nodePairs;
+      const Vec3<T> cb = frame_.R() * tb.centre(nb) + frame_.t();
+      if (!sphereMeetsRegion(Vec3<T>(ta.centre(na) - cb), T(ta.radius(na) + tb.radius(nb) + slack))) continue;
+      const bool la = ta.isLeaf(na), lb = tb.isLeaf(nb);
+      if (la && lb) {
+        leafPair(ta.triangle(na), tb.triangle(nb), slack);
+        continue;
+      }
+      // Split the larger sphere (a leaf is never split).
+      if (lb || (!la && ta.radius(na) >= tb.radius(nb))) {
+        stack_.push_back({ta.left(na), nb});
+        stack_.push_back({ta.right(na), nb});
+      } else {
+        stack_.push_back({na, tb.left(nb)});
+        stack_.push_back({na, tb.right(nb)});
+      }
+    }
+  }
+
+  /// Two leaves: the tight sphere of t_A ⊕ −t_B, then the feature pairs, each once.
+  void leafPair(int fa, int fb, const T& slack) {
+    const auto& ta = A_.triangle(fa);
+    const auto& tb = B_.triangle(fb);
+    Vec3<T> pts[9];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) pts[3 * i + j] = frame_.m(ta[i], tb[j]);
+    const Sphere<T> s = detail::enclosingSphere(pts, 9);
+    if (!sphereMeetsRegion(s.centre, T(s.radius + slack))) return;
+    for (int j = 0; j < 3; ++j) once({ConvolutionType::FV, fa, tb[j], 0});
+    for (int i = 0; i < 3; ++i) once({ConvolutionType::VF, ta[i], fb, 0});
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) once({ConvolutionType::EE, A_.triangleEdge(fa, i), B_.triangleEdge(fb, j), 0});
+  }
+
+  void once(const ConvolutionPair& c) {
+    if (seen_.insert(c.key()).second) consider(c);
+  }
+
+  const TriangleMesh<T>& A_;
+  const TriangleMesh<T>& B_;
+  LocalMinkowskiSumOptions<T> options_;
+  ConvolutionFrame<T> frame_;
+  MeshOverlap<T> overlap_;
+  typename detail::Trimmer<T>::Region region_;
+  detail::Trimmer<T> trimmer_;
+  std::vector<ConvolutionPair> facets_;
+  std::unordered_set<std::uint64_t> seen_;
+  std::vector<std::pair<int, int>> stack_;
+  MinkowskiPatch<T> patch_;
+  // ConvexMaps: the two maps, each feature's cell of the last call, a walk's work space.
+  std::unique_ptr<ConvexMap<T>> mapA_, mapB_;
+  std::vector<int> hintFA_, hintFB_, hintEA_, edgeMarks_;
+  typename ConvexMap<T>::Walk walk_;
+};
+
+}  // namespace mink

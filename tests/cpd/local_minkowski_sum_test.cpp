@@ -1,0 +1,226 @@
+// tests/cpd/local_minkowski_sum_test.cpp — mink/cpd/local_minkowski_sum.hpp against the
+// whole boundary (cpd/minkowski_boundary.hpp, itself checked against CGAL's
+// minkowski_sum_3 in minkowski_boundary_test.cpp) and against its own methods:
+//   - the patch is the part of ∂M in the ball: every triangle on the whole boundary, every
+//     point of the whole boundary inside the ball covered, every triangle meeting the ball;
+//   - culling never drops a facet that meets the query box: the sphere-tree and
+//     convex-map enumerations give exactly the brute-force set;
+//   - coherence: one object updated along a sampled motion (each feature walked from its
+//     cell of the last call) gives, frame by frame, exactly the facets and triangles of an
+//     object built afresh for that frame;
+//   - bad input: a non-finite centre, a radius that is not positive and finite, a pose
+//     that is not rigid;
+//   - float and CGAL::Gmpq instantiate and agree with double.
+#include "mink/cpd/local_minkowski_sum.hpp"
+
+#include <gtest/gtest.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "mink/cpd/minkowski_boundary.hpp"
+#include "support/expect_rejected.hpp"
+#include "support/mesh_shapes.hpp"
+#include "support/patch_measures.hpp"
+
+namespace {
+
+using V = Eigen::Vector3d;
+using M3 = Eigen::Matrix3d;
+using Mesh = mink::TriangleMesh<double>;
+using mink_test::MeshShape;
+
+#ifdef MINK_SANITIZE_BUILD
+constexpr int kFrames = 3;
+#else
+constexpr int kFrames = 12;
+#endif
+
+Mesh mesh(const MeshShape& s) { return Mesh::fromMesh(s.verticesAs<double>(), s.triangles); }
+
+struct Pair {
+  std::string name;
+  MeshShape a, b;
+};
+
+MeshShape scaledShape(MeshShape s, double f) {
+  for (auto& v : s.vertices) v *= f;
+  return s;
+}
+
+std::vector<Pair> pairs() {
+  return {{"L-block / box", mink_test::lBlock(), mink_test::boxShape(V(-0.5, -0.25, -0.75), V(0.5, 0.25, 0.75))},
+          {"torus 16x12 / box", mink_test::torus(16, 12), mink_test::boxShape(V(-0.4, -0.3, -0.5), V(0.4, 0.3, 0.5))},
+          {"U-block / L-block", mink_test::uBlock(), mink_test::lBlock()},
+          {"cube with hole / star", mink_test::cubeWithHole(), scaledShape(mink_test::starPrism(), 0.0625)},
+          {"torus / torus", mink_test::torus(16, 10), mink_test::torus(12, 8, 1.5, 0.5)}};
+}
+
+M3 rotation(double angle, const V& axis) { return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix(); }
+
+/// A set of triangles by their corners' coordinates (order of triangles and of their
+/// first corner free), for comparing two patches.
+std::set<std::vector<double>> triangleSet(const mink::MinkowskiPatch<double>& p) {
+  std::set<std::vector<double>> s;
+  for (const auto& t : p.triangles) {
+    int k = 0;
+    for (int c = 1; c < 3; ++c)
+      if (std::lexicographical_compare(p.vertices[t[c]].data(), p.vertices[t[c]].data() + 3, p.vertices[t[k]].data(),
+                                       p.vertices[t[k]].data() + 3))
+        k = c;
+    std::vector<double> key;
+    for (int c = 0; c < 3; ++c)
+      for (int a = 0; a < 3; ++a) key.push_back(p.vertices[t[(k + c) % 3]][a]);
+    s.insert(key);
+  }
+  return s;
+}
+
+std::set<std::tuple<int, int, int>> facetSet(const std::vector<mink::ConvolutionPair>& f) {
+  std::set<std::tuple<int, int, int>> s;
+  for (const auto& c : f) s.insert({static_cast<int>(c.type), c.featureA, c.featureB});
+  return s;
+}
+
+TEST(LocalMinkowskiSum, ThePartOfTheWholeBoundaryInTheBall) {
+  std::mt19937 rng(1401);
+  std::uniform_real_distribution<double> U(-1, 1);
+  for (const Pair& pr : pairs()) {
+    SCOPED_TRACE(pr.name);
+    const Mesh A = mesh(pr.a), B = mesh(pr.b);
+    mink::Pose<double> poseA, poseB;
+    poseA.rotation = rotation(0.7, V(-1, 2, 0.5));
+    poseA.translation = V(0.5, 0.2, -0.1);
+    poseB.rotation = rotation(0.4, V(1, 2, 3));
+    poseB.translation = V(0.2, -0.1, 0.3);
+    const auto full = mink::minkowskiBoundary(A, poseA, B, poseB);
+    ASSERT_FALSE(full.triangles.empty());
+    mink::LocalMinkowskiSum<double> local(A, B);
+    double L = 0;
+    for (const auto& v : full.vertices) L = std::max(L, v.cwiseAbs().maxCoeff());
+    for (int k = 0; k < 4; ++k) {
+      // A ball around a point of the boundary, of a quarter to half the scene.
+      const auto& t = full.triangles[(37 * k + 11) % full.triangles.size()];
+      const V c = full.vertices[t[0]] + 0.1 * L * V(U(rng), U(rng), U(rng));
+      const double r = (0.25 + 0.25 * k / 3.0) * L;
+      const auto& P = local.update(poseA, poseB, c, r);
+      int off = 0, outside = 0;
+      for (const auto& q : P.triangles) {
+        const V x = (P.vertices[q[0]] + P.vertices[q[1]] + P.vertices[q[2]]) / 3;
+        if (mink_test::distanceToPatch(full, x) > 1e-9 * L) ++off;
+        // Meets the ball: the nearest point of the triangle within r.
+        const double d = std::sqrt(mink_test::squaredDistanceToTriangle(c, P.vertices[q[0]], P.vertices[q[1]], P.vertices[q[2]]));
+        if (d > r * (1 + 1e-12)) ++outside;
+      }
+      int missing = 0, inBall = 0;
+      for (const auto& q : full.triangles)
+        for (int i = 1; i < 5; ++i)
+          for (int j = 1; i + j < 5; ++j) {
+            const V x = full.vertices[q[0]] + (full.vertices[q[1]] - full.vertices[q[0]]) * (i / 5.0) +
+                        (full.vertices[q[2]] - full.vertices[q[0]]) * (j / 5.0);
+            if ((x - c).norm() > r) continue;
+            ++inBall;
+            if (mink_test::distanceToPatch(P, x) > 1e-9 * L) ++missing;
+          }
+      std::printf("[cpd] %-22s ball %d: r %.2f, %zu triangles (whole %zu), facets %d, pieces %d, collision tests %d, %d points of the whole in the ball\n",
+                  pr.name.c_str(), k, r, P.triangles.size(), full.triangles.size(), P.facetsGathered, P.pieces, P.overlapTests, inBall);
+      EXPECT_EQ(off, 0) << "ball " << k << ": triangles off the whole boundary";
+      EXPECT_EQ(outside, 0) << "ball " << k << ": triangles not meeting the ball";
+      EXPECT_EQ(missing, 0) << "ball " << k << ": points of the whole boundary in the ball not covered";
+    }
+  }
+}
+
+TEST(LocalMinkowskiSum, CullingDropsNoFacetThatMeetsTheRegion) {
+  for (const Pair& pr : pairs()) {
+    SCOPED_TRACE(pr.name);
+    const Mesh A = mesh(pr.a), B = mesh(pr.b);
+    mink::Pose<double> poseA, poseB;
+    poseB.rotation = rotation(1.3, V(0.3, -1, 2));
+    poseB.translation = V(0.1, 0.3, -0.2);
+    mink::LocalMinkowskiSumOptions<double> brute, tree, maps;
+    brute.method = mink::LocalSumMethod::BruteForce;
+    tree.method = mink::LocalSumMethod::SphereTree;
+    maps.method = mink::LocalSumMethod::ConvexMaps;
+    mink::LocalMinkowskiSum<double> lb(A, B, brute), lt(A, B, tree), lm(A, B, maps);
+    for (const V& c : {V(0, 0, 0), V(0.5, -0.3, 0.8), V(-1, 0.5, 0.2)}) {
+      lb.update(poseA, poseB, c, 0.8);
+      lt.update(poseA, poseB, c, 0.8);
+      lm.update(poseA, poseB, c, 0.8);
+      EXPECT_EQ(facetSet(lt.facets()), facetSet(lb.facets())) << "sphere tree";
+      EXPECT_EQ(facetSet(lm.facets()), facetSet(lb.facets())) << "convex maps";
+      EXPECT_GT(lb.patch().candidatePairs, lm.patch().candidatePairs);
+    }
+  }
+}
+
+TEST(LocalMinkowskiSum, CoherentUpdatesEqualUpdatesFromScratch) {
+  for (const Pair& pr : pairs()) {
+    SCOPED_TRACE(pr.name);
+    const Mesh A = mesh(pr.a), B = mesh(pr.b);
+    mink::LocalMinkowskiSum<double> coherent(A, B);
+    for (int f = 0; f < kFrames; ++f) {
+      // B turns 3 degrees per frame about a tilted axis and slides; the ball follows.
+      mink::Pose<double> poseA, poseB;
+      poseB.rotation = rotation(0.05 * f, V(0.2, 1, 0.4)) * rotation(0.4, V(1, 2, 3));
+      poseB.translation = V(0.2 + 0.02 * f, -0.1, 0.3);
+      const V c(0.3 + 0.01 * f, 0.1, 0.4);
+      const auto& P = coherent.update(poseA, poseB, c, 0.9);
+      mink::LocalMinkowskiSum<double> fresh(A, B);
+      const auto& Q = fresh.update(poseA, poseB, c, 0.9);
+      EXPECT_EQ(facetSet(coherent.facets()), facetSet(fresh.facets())) << "frame " << f;
+      EXPECT_EQ(triangleSet(P), triangleSet(Q)) << "frame " << f;
+    }
+  }
+}
+
+TEST(LocalMinkowskiSum, BadInputIsRejected) {
+  const Mesh A = mesh(mink_test::lBlock()), B = mesh(mink_test::boxShape());
+  mink::LocalMinkowskiSum<double> local(A, B);
+  mink::Pose<double> p;
+  const double nan = std::nan(""), inf = INFINITY;
+  mink_test::expectRejected([&] { local.update(p, p, V(nan, 0, 0), 1.0); }, "centre is not finite", "NaN centre");
+  mink_test::expectRejected([&] { local.update(p, p, V(0, inf, 0), 1.0); }, "centre is not finite", "infinite centre");
+  for (double r : {0.0, -1.0, nan, inf})
+    mink_test::expectRejected([&] { local.update(p, p, V(0, 0, 0), r); }, "radius", "radius " + std::to_string(r));
+  mink::Pose<double> skew;
+  skew.rotation(0, 1) = 0.5;
+  mink_test::expectRejected([&] { local.update(skew, p, V(0, 0, 0), 1.0); }, "poseA", "non-rigid poseA");
+  mink_test::expectRejected([&] { local.update(p, skew, V(0, 0, 0), 1.0); }, "poseB", "non-rigid poseB");
+  mink::Pose<double> nanPose;
+  nanPose.translation[2] = nan;
+  mink_test::expectRejected([&] { local.update(p, nanPose, V(0, 0, 0), 1.0); }, "poseB", "NaN translation");
+}
+
+template <class T>
+double patchArea(const MeshShape& a, const MeshShape& b, const V& tb, const V& c, double r) {
+  const auto A = mink::TriangleMesh<T>::fromMesh(a.verticesAs<T>(), a.triangles);
+  const auto B = mink::TriangleMesh<T>::fromMesh(b.verticesAs<T>(), b.triangles);
+  mink::LocalMinkowskiSum<T> local(A, B);
+  mink::Pose<T> poseA, poseB;
+  poseB.translation = mink::Vec3<T>(T(tb[0]), T(tb[1]), T(tb[2]));
+  const auto& P = local.update(poseA, poseB, mink::Vec3<T>(T(c[0]), T(c[1]), T(c[2])), T(r));
+  return mink_test::measure(P).area;
+}
+
+TEST(LocalMinkowskiSum, FloatAndExactRationalsAgreeWithDouble) {
+  // Dyadic data: the same numbers in every scalar type.
+  const MeshShape a = mink_test::uBlock(), b = mink_test::boxShape(V(-0.5, -0.25, -0.75), V(0.5, 0.25, 0.75));
+  const V tb(0.375, 0.0625, 0.25), c(1.5, 1.25, 0.5);
+  const double ad = patchArea<double>(a, b, tb, c, 1.0);
+  EXPECT_GT(ad, 0.0);
+  EXPECT_NEAR(patchArea<float>(a, b, tb, c, 1.0), ad, 1e-5 * ad);
+  EXPECT_NEAR(patchArea<CGAL::Gmpq>(a, b, tb, c, 1.0), ad, 1e-12 * ad);
+}
+
+}  // namespace
