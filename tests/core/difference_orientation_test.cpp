@@ -90,4 +90,40 @@ TEST(Expansion, IntervalEnclosesAndExpansionEqualsTheExactValue) {
   }
 }
 
+// Degree 9 as the trimming evaluates it: a product of three 3x3-style cross terms, once
+// factored and once expanded term by term. The two expansions must be equal exactly (their
+// difference has sign 0), and adding one ulp of the smallest input changes the sign as
+// the rationals say. Inputs spread over 2^-30 .. 2^30 so that components do not overlap.
+TEST(Expansion, ExactOnIdentitiesOfDegreeNine) {
+  using mink::detail::Expansion;
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> U(-1, 1);
+  for (int k = 0; k < 2000; ++k) {
+    double x[9];
+    for (double& v : x) v = U(rng) * std::ldexp(1.0, static_cast<int>(rng() % 60) - 30);
+    Expansion a[9];
+    for (int i = 0; i < 9; ++i) a[i] = Expansion(x[i]);
+    const Expansion factored = (a[0] + a[1] + a[2]) * (a[3] - a[4] + a[5]) * (a[6] + a[7] - a[8]);
+    Expansion expanded;
+    const double s1[3] = {1, 1, 1}, s2[3] = {1, -1, 1}, s3[3] = {1, 1, -1};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int l = 0; l < 3; ++l) {
+          const Expansion term = a[i] * a[3 + j] * a[6 + l];
+          if (s1[i] * s2[j] * s3[l] > 0)
+            expanded += term;
+          else
+            expanded -= term;
+        }
+    EXPECT_EQ((factored - expanded).sign(), 0);
+    const double tiny = std::ldexp(1.0, -200);
+    Q q[9];
+    for (int i = 0; i < 9; ++i) q[i] = Q(x[i]);
+    const Q exactValue = (q[0] + q[1] + q[2]) * (q[3] - q[4] + q[5]) * (q[6] + q[7] - q[8]);
+    const Q shifted = exactValue - Q(tiny);
+    const Expansion e = factored - Expansion(tiny);
+    EXPECT_EQ(e.sign(), (shifted > 0) - (shifted < 0));
+  }
+}
+
 }  // namespace

@@ -7,7 +7,7 @@
 // the cost of plain double. Only when it contains 0 is the same template evaluated with
 // N = Expansion: a sum of non-overlapping doubles equal to the value (J. R. Shewchuk,
 // "Adaptive precision floating-point arithmetic and fast robust geometric predicates",
-// DCG 18, 1997: Grow-Expansion, Expansion-Sum, Scale-Expansion), whose largest component
+// DCG 18, 1997: Fast-Expansion-Sum, Scale-Expansion), whose largest component
 // carries its sign. Exact while no product underflows or overflows: for the degrees used
 // in mink (up to 9) that is inputs between about 2^-100 and 2^100 in magnitude (or 0).
 // The expansion stage allocates; it runs only on inputs the filter cannot decide.
@@ -102,8 +102,8 @@ class ExpansionOf {
   }
 
   friend Expansion operator+(const Expansion& a, const Expansion& b) {
-    Expansion r = a;
-    for (F x : b.c_) r.grow(x);
+    Expansion r;
+    sum(a.c_, b.c_, r.c_);
     return r;
   }
   friend Expansion operator-(const Expansion& a) {
@@ -113,21 +113,17 @@ class ExpansionOf {
   }
   friend Expansion operator-(const Expansion& a, const Expansion& b) { return a + (-b); }
   friend Expansion operator*(const Expansion& a, const Expansion& b) {
-    Expansion r;
+    Expansion r, s;
+    std::vector<F> t;
     for (F x : b.c_) {
-      const Expansion s = a.scaled(x);
-      for (F y : s.c_) r.grow(y);
+      a.scaled(x, s);
+      sum(r.c_, s.c_, t);
+      r.c_.swap(t);
     }
     return r;
   }
-  Expansion& operator+=(const Expansion& b) {
-    for (F x : b.c_) grow(x);
-    return *this;
-  }
-  Expansion& operator-=(const Expansion& b) {
-    for (F x : b.c_) grow(-x);
-    return *this;
-  }
+  Expansion& operator+=(const Expansion& b) { return *this = *this + b; }
+  Expansion& operator-=(const Expansion& b) { return *this = *this - b; }
 
  private:
   static void twoSum(F a, F b, F& x, F& y) {
@@ -139,23 +135,41 @@ class ExpansionOf {
     x = a * b;
     y = std::fma(a, b, -x);
   }
-  // this += b exactly (Grow-Expansion, zeros eliminated).
-  void grow(F b) {
-    F q = b;
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < c_.size(); ++i) {
-      F x, y;
-      twoSum(q, c_[i], x, y);
-      if (y != F(0)) c_[k++] = y;
-      q = x;
-    }
-    c_.resize(k);
-    if (q != F(0)) c_.push_back(q);
+  static void fastTwoSum(F a, F b, F& x, F& y) {  // |a| >= |b|
+    x = a + b;
+    y = b - (x - a);
   }
-  // this * b exactly (Scale-Expansion).
-  Expansion scaled(F b) const {
-    Expansion r;
-    if (c_.empty() || b == F(0)) return r;
+  // h := e + f exactly (Fast-Expansion-Sum with zero elimination: the two sequences merged
+  // by magnitude, then one pass; linear, where growing e by each term of f is quadratic).
+  // Valid for the strongly non-overlapping expansions every operation here keeps (IEEE
+  // round-to-nearest-even).
+  static void sum(const std::vector<F>& e, const std::vector<F>& f, std::vector<F>& h) {
+    h.clear();
+    if (e.empty() || f.empty()) {
+      h = e.empty() ? f : e;
+      return;
+    }
+    h.reserve(e.size() + f.size());
+    std::size_t i = 0, j = 0;
+    auto next = [&]() {
+      if (j == f.size() || (i < e.size() && std::abs(e[i]) < std::abs(f[j]))) return e[i++];
+      return f[j++];
+    };
+    F q = next(), x, y;
+    fastTwoSum(next(), q, x, y);
+    q = x;
+    if (y != F(0)) h.push_back(y);
+    while (i < e.size() || j < f.size()) {
+      twoSum(q, next(), x, y);
+      q = x;
+      if (y != F(0)) h.push_back(y);
+    }
+    if (q != F(0)) h.push_back(q);
+  }
+  // r := this * b exactly (Scale-Expansion, zeros eliminated).
+  void scaled(F b, Expansion& r) const {
+    r.c_.clear();
+    if (c_.empty() || b == F(0)) return;
     F q, h;
     twoProduct(c_[0], b, q, h);
     if (h != F(0)) r.c_.push_back(h);
@@ -168,7 +182,6 @@ class ExpansionOf {
       if (e != F(0)) r.c_.push_back(e);
     }
     if (q != F(0)) r.c_.push_back(q);
-    return r;
   }
   std::vector<F> c_;
 };
