@@ -1,0 +1,218 @@
+// mink/cpd/detail/trim_patches.hpp — Trimmer<T> (cpd/detail/trimming.hpp, which includes
+// this file at its end; include that one): pieces stitched into patches where no facet
+// separates them, one collision test per patch, and the wanted pieces of patches on the
+// boundary emitted as triangles.
+#pragma once
+
+namespace mink {
+namespace detail {
+
+template <class T>
+void Trimmer<T>::stitch() {
+  parent_.resize(final_.size());
+  for (std::size_t i = 0; i < final_.size(); ++i) parent_[i] = static_cast<int>(i);
+  edgeUse_.clear();
+  for (const Soup& f : soup_)
+    for (int c = 0; c < f.nc; ++c) ++edgeUse_[TrimLabel::edge(f.m[c], f.m[(c + 1) % f.nc])];
+  sideOwner_.clear();
+  for (std::size_t i = 0; i < final_.size(); ++i) {
+    const Final& f = final_[i];
+    for (int k = 0; k < f.count; ++k) {
+      const int a = finalV_[static_cast<std::size_t>(f.first + k)];
+      const int b = finalV_[static_cast<std::size_t>(f.first + (k + 1) % f.count)];
+      sideOwner_[sideKey(a, b)] = static_cast<int>(i);
+    }
+  }
+  for (std::size_t i = 0; i < final_.size(); ++i) {
+    const Final& f = final_[i];
+    for (int k = 0; k < f.count; ++k) {
+      const int a = finalV_[static_cast<std::size_t>(f.first + k)];
+      const int b = finalV_[static_cast<std::size_t>(f.first + (k + 1) % f.count)];
+      const auto it = sideOwner_.find(sideKey(b, a));
+      if (it == sideOwner_.end()) continue;
+      const int j = it->second;
+      if (find(static_cast<int>(i)) == find(j)) continue;
+      if (!separated(f.soup, final_[static_cast<std::size_t>(j)].soup, finalE_[static_cast<std::size_t>(f.first + k)], a, b))
+        parent_[static_cast<std::size_t>(find(static_cast<int>(i)))] = find(j);
+    }
+  }
+}
+
+template <class T>
+bool Trimmer<T>::sideCrossed(int F, int a, int b) const {
+  Box3 query;
+  query.add(toD(coords_[static_cast<std::size_t>(a)]));
+  query.add(toD(coords_[static_cast<std::size_t>(b)]));
+  bool crossed = false;
+  tree_.forOverlapping(padded(query), [&](int G) {
+    if (crossed || G == F) return;
+    const Soup& g = soup_[static_cast<std::size_t>(G)];
+    const std::uint64_t plane = TrimLabel::plane(G);
+    if (side(F, a, plane) != 0 || side(F, b, plane) != 0) return;
+    bool inF = true;
+    for (int c = 0; c < g.nc && inF; ++c) inF = pointSide(soup_[static_cast<std::size_t>(F)], g.m[c]) == 0;
+    if (!inF) {
+      crossed = segmentMayMeetTriangle(a, b, G);
+      return;
+    }
+    for (int c = 0; c < g.nc && !crossed; ++c) {
+      const int u = g.m[c], v = g.m[(c + 1) % g.nc];
+      const std::uint64_t e = TrimLabel::edge(u, v);
+      if (side(F, a, e) == 0 && side(F, b, e) == 0 && segmentOverlapsEdge(a, b, std::min(u, v), std::max(u, v)))
+        crossed = true;
+    }
+  });
+  return crossed;
+}
+
+template <class T>
+bool Trimmer<T>::separated(int F, int G, std::uint64_t label, int a, int b) const {
+  const Vec3<T>&xa = coords_[static_cast<std::size_t>(a)], &xb = coords_[static_cast<std::size_t>(b)];
+  const T size = T((xa - xb).cwiseAbs().maxCoeff());
+  const Soup& sf = soup_[static_cast<std::size_t>(F)];
+  T scale = T(0);
+  for (int c = 0; c < sf.nc; ++c) scale = std::max(scale, T(mCoord_[static_cast<std::size_t>(sf.m[c])].cwiseAbs().maxCoeff()));
+  if (!(size > T(1e-9) * scale)) return true;
+  if (TrimLabel::isBox(label)) return true;
+  const Soup& f = soup_[static_cast<std::size_t>(F)];
+  bool own = false;
+  for (int c = 0; c < f.nc; ++c) own = own || label == TrimLabel::edge(f.m[c], f.m[(c + 1) % f.nc]);
+  if (!own) {
+    // A cut within F (a plane's trace, or a coplanar polygon's edge line): the pieces are
+    // one if no polygon reaches the side along it — every polygon whose plane holds the
+    // side is tested, not only the one that made the cut (several may share its line).
+    if (F != G) return true;
+    return sideCrossed(F, a, b);
+  }
+  if (F == G) return true;
+  const auto it = edgeUse_.find(label);
+  if (it == edgeUse_.end() || it->second != 2) return true;
+  return blocked_.count(label) != 0;
+}
+
+template <class T>
+bool Trimmer<T>::polygonMeetsBall(const int* v, int count) const {
+  const Vec3<T>& c = region_.centre;
+  const T r2 = region_.radius * region_.radius;
+  // Nearest point of the convex polygon: inside it (projection), else on a side.
+  const std::size_t n = static_cast<std::size_t>(count);
+  const Vec3<T>& x0 = coords_[static_cast<std::size_t>(v[0])];
+  const Vec3<T> nrm = (coords_[static_cast<std::size_t>(v[1])] - x0).cross(coords_[static_cast<std::size_t>(v[n - 1])] - x0);
+  const T nn = nrm.squaredNorm();
+  bool inside = nn > T(0);
+  for (std::size_t i = 0; i < n && inside; ++i) {
+    const Vec3<T>& a = coords_[static_cast<std::size_t>(v[i])];
+    const Vec3<T>& b = coords_[static_cast<std::size_t>(v[(i + 1) % n])];
+    if ((b - a).cross(c - a).dot(nrm) < T(0)) inside = false;
+  }
+  if (inside) {
+    const T h = nrm.dot(c - x0);
+    return h * h <= r2 * nn;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3<T>& a = coords_[static_cast<std::size_t>(v[i])];
+    const Vec3<T>& b = coords_[static_cast<std::size_t>(v[(i + 1) % n])];
+    const Vec3<T> d = b - a;
+    const T dd = d.squaredNorm();
+    T t = dd > T(0) ? T((c - a).dot(d) / dd) : T(0);
+    if (t < T(0)) t = T(0);
+    if (t > T(1)) t = T(1);
+    if ((a + t * d - c).squaredNorm() <= r2) return true;
+  }
+  return false;
+}
+
+template <class T>
+bool Trimmer<T>::ownedByOther(int F, const Poly& p) const {
+  if (coplanar_.empty()) return false;
+  const Soup& f = soup_[static_cast<std::size_t>(F)];
+  const Vec3<T> x = centroid(p);
+  for (int G : coplanar_) {
+    if (G > F) continue;
+    const Soup& g = soup_[static_cast<std::size_t>(G)];
+    if (g.axis != f.axis || g.axisSign != f.axisSign) continue;  // opposite orientation
+    bool inside = true;
+    for (int c = 0; c < g.nc && inside; ++c)
+      inside = f.axisSign * orient2d(mCoord_[g.m[c]], mCoord_[g.m[(c + 1) % g.nc]], x, f.axis) > 0;
+    if (inside) return true;
+  }
+  return false;
+}
+
+template <class T>
+bool Trimmer<T>::onBoundary(int piece, MeshOverlap<T>& overlap) const {
+  const Final& fp = final_[static_cast<std::size_t>(piece)];
+  const int F = fp.soup;
+  const Soup& f = soup_[static_cast<std::size_t>(F)];
+  Vec3<T> x = Vec3<T>::Zero();
+  for (int k = 0; k < fp.count; ++k) x += coords_[static_cast<std::size_t>(finalV_[static_cast<std::size_t>(fp.first + k)])];
+  x /= T(fp.count);
+  const Eigen::Vector3d xd = toD(x);
+  Eigen::Vector3d nd = toD(f.n);
+  nd /= nd.norm();
+  double bound = std::numeric_limits<double>::infinity();
+  if (region_.bounded)
+    for (int a = 0; a < 3; ++a) {
+      const double d = std::min(xd[a] - toDouble(region_.lo[a]), toDouble(region_.hi[a]) - xd[a]);
+      bound = std::min(bound, d * d);
+    }
+  const double d2 = tree_.nearest(xd, bound, [&](int G) {
+    if (G == F) return std::numeric_limits<double>::infinity();
+    const Soup& g = soup_[static_cast<std::size_t>(G)];
+    bool inPlane = true;
+    for (int c = 0; c < g.nc && inPlane; ++c) inPlane = pointSide(f, g.m[c]) == 0;
+    if (inPlane) return std::numeric_limits<double>::infinity();  // in F's plane: the motion leaves it
+    double d = squaredDistanceToTriangle(xd, toD(mCoord_[g.m[0]]), toD(mCoord_[g.m[1]]), toD(mCoord_[g.m[2]]));
+    if (g.nc == 4)
+      d = std::min(d, squaredDistanceToTriangle(xd, toD(mCoord_[g.m[0]]), toD(mCoord_[g.m[2]]), toD(mCoord_[g.m[3]])));
+    return d;
+  });
+  double delta = 0.5 * std::sqrt(d2);
+  if (!std::isfinite(delta)) {
+    delta = 0.0;
+    for (int c = 0; c < f.nc; ++c) delta = std::max(delta, (toD(mCoord_[f.m[c]]) - xd).norm());
+  }
+  Vec3<T> y;
+  for (int a = 0; a < 3; ++a) y[a] = x[a] + T(delta * nd[a]);
+  // Most pieces inside M overlap where the last one did (they are tested in order along
+  // the facets): that triangle pair first, exactly, before a full traversal.
+  if (witnessA_ >= 0) {
+    const auto& ta = frame_->A().triangle(witnessA_);
+    const auto& tb = frame_->B().triangle(witnessB_);
+    if (trianglesIntersect(frame_->a(ta[0]), frame_->a(ta[1]), frame_->a(ta[2]), Vec3<T>(frame_->b(tb[0]) + y),
+                           Vec3<T>(frame_->b(tb[1]) + y), Vec3<T>(frame_->b(tb[2]) + y)))
+      return false;
+  }
+  if (!overlap.overlaps(y)) return true;
+  if (overlap.result().status == OverlapStatus::BoundariesMeet)
+    witnessA_ = overlap.result().triangleA, witnessB_ = overlap.result().triangleB;
+  return false;
+}
+
+template <class T>
+void Trimmer<T>::emit(int piece, MinkowskiPatch<T>& out) {
+  const Final& fp = final_[static_cast<std::size_t>(piece)];
+  const Soup& f = soup_[static_cast<std::size_t>(fp.soup)];
+  const ConvolutionPair& pair = (*facets_)[static_cast<std::size_t>(f.facet)];
+  auto index = [&](int id) {
+    if (static_cast<std::size_t>(id) >= outVertex_.size()) outVertex_.resize(static_cast<std::size_t>(id) + 1, -1);
+    int& o = outVertex_[static_cast<std::size_t>(id)];
+    if (o < 0) {
+      o = static_cast<int>(out.vertices.size());
+      out.vertices.push_back(coords_[static_cast<std::size_t>(id)]);
+    }
+    return o;
+  };
+  const int* v = &finalV_[static_cast<std::size_t>(fp.first)];
+  for (int i = 1; i + 1 < fp.count; ++i) {
+    // A fan triangle of a piece that meets the ball may itself miss it: the patch keeps
+    // only triangles that meet the ball.
+    const int tri[3] = {v[0], v[i], v[i + 1]};
+    if (region_.ball && !polygonMeetsBall(tri, 3)) continue;
+    out.triangles.push_back({index(v[0]), index(v[i]), index(v[i + 1])});
+    out.pairs.push_back(pair);
+  }
+}
+
+}  // namespace detail
+}  // namespace mink
