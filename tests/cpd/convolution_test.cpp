@@ -110,8 +110,9 @@ TEST(Convolution, NonConvexCompatibilityIsLocalAndSkipsReflexEdges) {
         }
       for (int e = 0; e < A.numEdges(); ++e)
         for (int ep = 0; ep < B.numEdges(); ++ep)
-          if (A.edgeKind(e) == mink::EdgeKind::Reflex || B.edgeKind(ep) == mink::EdgeKind::Reflex)
+          if (A.edgeKind(e) == mink::EdgeKind::Reflex || B.edgeKind(ep) == mink::EdgeKind::Reflex) {
             EXPECT_EQ(frame.compatibleEE(e, ep), 0);
+          }
     }
 }
 

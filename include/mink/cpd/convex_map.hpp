@@ -79,6 +79,11 @@ class ConvexMap {
     pack(esets, eStart_, eItems_);
   }
 
+  /// The convex map of X, built on the first request and shared by every user of X.
+  static std::shared_ptr<const ConvexMap> of(const TriangleMesh<T>& X) {
+    return X.template derived<ConvexMap>([&] { return new ConvexMap(X); });
+  }
+
   /// The polytope H whose faces are the cells (the polar dual of C(X)).
   const ConvexPolyhedron<double>& hull() const { return *H_; }
   int numCells() const { return H_->numFaces(); }

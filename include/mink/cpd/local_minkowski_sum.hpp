@@ -137,8 +137,8 @@ class LocalMinkowskiSum {
   /// the correspondence set of the cell holding its direction (cpd/convex_map.hpp).
   void viaConvexMaps() {
     using V3 = Eigen::Vector3d;
-    if (!mapA_) mapA_ = std::make_unique<ConvexMap<T>>(A_);
-    if (!mapB_) mapB_ = std::make_unique<ConvexMap<T>>(B_);
+    if (!mapA_) mapA_ = ConvexMap<T>::of(A_);
+    if (!mapB_) mapB_ = ConvexMap<T>::of(B_);
     hintFA_.resize(static_cast<std::size_t>(A_.numTriangles()), -1);
     hintFB_.resize(static_cast<std::size_t>(B_.numTriangles()), -1);
     hintEA_.resize(static_cast<std::size_t>(A_.numEdges()), -1);
@@ -276,7 +276,7 @@ class LocalMinkowskiSum {
   std::vector<std::pair<int, int>> stack_;
   MinkowskiPatch<T> patch_;
   // ConvexMaps: the two maps, each feature's cell of the last call, a walk's work space.
-  std::unique_ptr<ConvexMap<T>> mapA_, mapB_;
+  std::shared_ptr<const ConvexMap<T>> mapA_, mapB_;  // shared with every user of the mesh
   std::vector<int> hintFA_, hintFB_, hintEA_, edgeMarks_;
   typename ConvexMap<T>::Walk walk_;
 };

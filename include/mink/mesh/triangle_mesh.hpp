@@ -25,6 +25,9 @@
 
 #include <array>
 #include <memory>
+#include <mutex>
+#include <typeindex>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -119,6 +122,18 @@ class TriangleMesh {
   /// The bounding-sphere hierarchy of the triangles, built by fromMesh.
   const SphereTree<T>& sphereTree() const { return d_->tree; }
 
+  /// A structure of type D derived from this mesh by a higher layer (CPD's convex map):
+  /// made by make() on the first request, then shared by every copy of the mesh and every
+  /// caller (thread-safe; make runs at most once per type).
+  template <class D, class Make>
+  std::shared_ptr<const D> derived(Make&& make) const {
+    auto& slot = *d_->derived;
+    std::lock_guard<std::mutex> lock(slot.mutex);
+    std::shared_ptr<const void>& p = slot.items[std::type_index(typeid(D))];
+    if (!p) p = std::shared_ptr<const D>(make());
+    return std::static_pointer_cast<const D>(p);
+  }
+
  private:
   static constexpr unsigned char kAllConvex = 1, kNoReflex = 2;
   explicit TriangleMesh(std::shared_ptr<const detail::TriangleMeshData<T>> d) : d_(std::move(d)) {}
@@ -146,6 +161,12 @@ struct TriangleMeshData {
   Vec3<T> boxMin = Vec3<T>::Zero(), boxMax = Vec3<T>::Zero();
   T extent = T(0);
   SphereTree<T> tree;
+  // Structures derived on request (TriangleMesh::derived), shared by all copies.
+  struct Derived {
+    std::mutex mutex;
+    std::unordered_map<std::type_index, std::shared_ptr<const void>> items;
+  };
+  std::shared_ptr<Derived> derived = std::make_shared<Derived>();
 };
 }  // namespace detail
 
