@@ -5,10 +5,14 @@
 // of B in A's frame, many translations y, each asking "does A meet B + y?".
 //   1. Per pose (constructor, setPlacement): B's vertices and sphere-tree centres are
 //      mapped into A's frame once (x -> R x + t), with B's per-component boxes.
-//   2. Per query: the two sphere trees are traversed from the roots; a node pair is
-//      culled when |c_A − (c'_B + y)|² > (r_A + r_B + slack)², compared squared (no sqrt),
-//      with `slack` bounding the rounding of the mapped points (0 for exact T); the
-//      node with the larger radius is split first.
+//   2. Per query, floating-point T: two trees of triangle boxes (double) are traversed
+//      in pairs, A's built once, B's from its mapped vertices per placement, B's moved by
+//      y; a pair of boxes apart by more than the rounding of the conversion to double is
+//      culled. Boxes hug thin and hollow shapes (a torus through another's hole) far
+//      better than spheres do. Exact T: the two sphere trees, a node pair culled when
+//      |c_A − (c'_B + y)|² > (r_A + r_B + slack)², compared squared (no sqrt), with
+//      `slack` bounding the rounding of the mapped points (0 for exact T); the node with
+//      the larger radius is split first.
 //   3. Leaf pairs are tested exactly (trianglesIntersect), on A's vertices and on the
 //      points fl(R v + t) + y of B — the same numbers every step uses.
 //   4. If no boundary pair meets, the solids still overlap iff one surface component lies
@@ -34,6 +38,7 @@
 #include "mink/core/detail/input_checks.hpp"
 #include "mink/core/scalar_traits.hpp"
 #include "mink/core/types.hpp"
+#include "mink/mesh/detail/box_tree.hpp"
 #include "mink/mesh/point_in_mesh.hpp"
 #include "mink/mesh/triangle_intersection.hpp"
 #include "mink/mesh/triangle_mesh.hpp"
@@ -88,6 +93,13 @@ class MeshOverlap {
         m = std::max(m, T(B_.sphereTree().centre(n).cwiseAbs().maxCoeff()));
       bScale_ = m;
     }
+    if constexpr (!ScalarTraits<T>::isExact) {
+      aBoxes_.resize(static_cast<std::size_t>(A_.numTriangles()));
+      for (int f = 0; f < A_.numTriangles(); ++f)
+        for (int v : A_.triangle(f)) aBoxes_[static_cast<std::size_t>(f)].add(toD(A_.vertex(v)));
+      aTree_.build(aBoxes_);
+      bBoxes_.resize(static_cast<std::size_t>(B_.numTriangles()));
+    }
     const std::size_t depth = static_cast<std::size_t>(A_.sphereTree().height() + B_.sphereTree().height());
     stack_.reserve(2 * depth + 8);
     rayStack_.reserve(2 * depth + 8);
@@ -132,6 +144,17 @@ class MeshOverlap {
       // follow; E itself is computed with a rounding of a few eps.
       const Mat3<T> E = R_.transpose() * R_ - Mat3<T>::Identity();
       radiusScale_ = T(1) + T(2) * E.cwiseAbs().maxCoeff() + T(8) * eps;
+      // B's triangle boxes from the very points the exact tests use.
+      double scale = 0.0;
+      for (int f = 0; f < B_.numTriangles(); ++f) {
+        detail::Box3& b = bBoxes_[static_cast<std::size_t>(f)];
+        b = detail::Box3();
+        for (int v : B_.triangle(f)) b.add(toD(bPoints_[static_cast<std::size_t>(v)]));
+        scale = std::max({scale, b.hi.cwiseAbs().maxCoeff(), b.lo.cwiseAbs().maxCoeff()});
+      }
+      bTree_.build(bBoxes_);
+      for (const detail::Box3& b : aBoxes_) scale = std::max({scale, b.hi.cwiseAbs().maxCoeff(), b.lo.cwiseAbs().maxCoeff()});
+      boxScale_ = scale;
     }
   }
 
@@ -224,6 +247,7 @@ class MeshOverlap {
   }
 
   bool boundariesMeet() {
+    if constexpr (!ScalarTraits<T>::isExact) return boxesMeet();
     const SphereTree<T>& ta = A_.sphereTree();
     const SphereTree<T>& tb = B_.sphereTree();
     stack_.clear();
@@ -261,6 +285,32 @@ class MeshOverlap {
       }
     }
     return false;
+  }
+
+  // Floating T: the box trees. A point p of B's triangle, rounded to double, lies in its
+  // box; fl(p + y) in T and p + y in double differ by the rounding of T's sum and of the
+  // conversions to double, each under one unit roundoff (T's or double's, the larger) of
+  // the larger magnitude: `pad`, four of them, grows every comparison.
+  bool boxesMeet() {
+    const Eigen::Vector3d y = toD(y_);
+    const double u = std::max(detail::toDouble(ScalarTraits<T>::epsilon()), std::ldexp(1.0, -52));
+    const double pad = 4.0 * u * (boxScale_ + y.cwiseAbs().maxCoeff());
+    const bool met = aTree_.anyPair(bTree_, y, pad, [&](int fa, int fb) {
+      ++result_.trianglePairs;
+      const auto& ia = A_.triangle(fa);
+      const auto& ib = B_.triangle(fb);
+      if (!trianglesIntersect(A_.vertex(ia[0]), A_.vertex(ia[1]), A_.vertex(ia[2]), Vec3<T>(bPoints_[ib[0]] + y_),
+                              Vec3<T>(bPoints_[ib[1]] + y_), Vec3<T>(bPoints_[ib[2]] + y_)))
+        return false;
+      result_.triangleA = fa;
+      result_.triangleB = fb;
+      return true;
+    });
+    result_.nodePairs = aTree_.pairsVisited();
+    return met;
+  }
+  static Eigen::Vector3d toD(const Vec3<T>& x) {
+    return Eigen::Vector3d(detail::toDouble(x[0]), detail::toDouble(x[1]), detail::toDouble(x[2]));
   }
 
   void pushNearerLast(const std::pair<int, int>& p, const std::pair<int, int>& q, const T& dp, const T& dq) {
@@ -318,6 +368,10 @@ class MeshOverlap {
   T bScale_ = T(0), placementSlack_ = T(0), slackB_ = T(0), radiusScale_ = T(1);
   std::vector<std::pair<int, int>> stack_;
   std::vector<int> rayStack_;
+  // Floating T: triangle boxes (A's fixed, B's per placement) and their trees.
+  std::vector<detail::Box3> aBoxes_, bBoxes_;
+  detail::BoxTree aTree_, bTree_;
+  double boxScale_ = 0.0;
   OverlapResult result_;
 };
 

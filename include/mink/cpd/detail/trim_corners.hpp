@@ -153,13 +153,21 @@ template <class T>
 int Trimmer<T>::side(int F, int id, std::uint64_t cut) const {
   const TrimKey& key = keys_[static_cast<std::size_t>(id)];
   if (key.contains(cut)) return 0;
+  // Floating T, a constructed corner: the interval filter first (it can only certify a
+  // non-zero side, so it never contradicts the test by names below).
+  if constexpr (!ScalarTraits<T>::isExact) {
+    if (!key.isPoint()) {
+      const int filtered = filteredSide(F, id, cut);
+      if (filtered != 0) return filtered;
+    }
+  }
   // A corner made on a line of F's plane that is the cut's line is on the cut: decided
   // from the inputs that name the lines (exactly), not from the rounded corner.
   if (!key.isPoint())
     for (const std::uint64_t l : key.k)
       if (l != TrimLabel::kNone && l != TrimLabel::plane(F) && sameLine(F, l, cut)) return 0;
   if constexpr (!ScalarTraits<T>::isExact) {
-    if (!key.isPoint()) return constructedSide(F, id, cut);
+    if (!key.isPoint()) return exactSide(F, id, cut);
   }
   const Vec3<T>& x = coords_[static_cast<std::size_t>(id)];
   if (TrimLabel::isPlane(cut)) {
@@ -317,7 +325,7 @@ N Trimmer<T>::cutValue(int F, std::uint64_t cut, const N X[3], const N& W) const
 }
 
 template <class T>
-int Trimmer<T>::constructedSide(int F, int id, std::uint64_t cut) const {
+int Trimmer<T>::filteredSide(int F, int id, std::uint64_t cut) const {
   const Homog& h = hbox_[static_cast<std::size_t>(id)];
   if (h.boxed) {
     const IV one(FloatOf(1));
@@ -329,8 +337,12 @@ int Trimmer<T>::constructedSide(int F, int id, std::uint64_t cut) const {
     const int sv = cutValue<IV>(F, cut, h.X, h.W).certainSign();
     if (sv != 0) return sv * sw;
   }
-  // The filter could not tell (the corner is within rounding of the cut): the exact
-  // sign, once per corner and cut (F matters only for an edge line's orientation).
+  return 0;
+}
+
+template <class T>
+int Trimmer<T>::exactSide(int F, int id, std::uint64_t cut) const {
+  // Once per corner and cut (F matters only for an edge line's orientation).
   const TrimKey cached{{static_cast<std::uint64_t>(id), cut, TrimLabel::isEdge(cut) ? static_cast<std::uint64_t>(F) : TrimLabel::kNone}};
   const auto it = exactSide_.find(cached);
   if (it != exactSide_.end()) return it->second;

@@ -174,18 +174,23 @@ bool Trimmer<T>::onBoundary(int piece, MeshOverlap<T>& overlap) const {
   }
   Vec3<T> y;
   for (int a = 0; a < 3; ++a) y[a] = x[a] + T(delta * nd[a]);
-  // Most pieces inside M overlap where the last one did (they are tested in order along
-  // the facets): that triangle pair first, exactly, before a full traversal.
-  if (witnessA_ >= 0) {
-    const auto& ta = frame_->A().triangle(witnessA_);
-    const auto& tb = frame_->B().triangle(witnessB_);
+  // Most pieces inside M overlap where one of the last few did (they are tested in
+  // order along the facets): those triangle pairs first, exactly, before a traversal.
+  for (const std::pair<int, int>& w : witnesses_) {
+    const auto& ta = frame_->A().triangle(w.first);
+    const auto& tb = frame_->B().triangle(w.second);
     if (trianglesIntersect(frame_->a(ta[0]), frame_->a(ta[1]), frame_->a(ta[2]), Vec3<T>(frame_->b(tb[0]) + y),
                            Vec3<T>(frame_->b(tb[1]) + y), Vec3<T>(frame_->b(tb[2]) + y)))
       return false;
   }
   if (!overlap.overlaps(y)) return true;
-  if (overlap.result().status == OverlapStatus::BoundariesMeet)
-    witnessA_ = overlap.result().triangleA, witnessB_ = overlap.result().triangleB;
+  if (overlap.result().status == OverlapStatus::BoundariesMeet) {
+    if (witnesses_.size() < kWitnesses)
+      witnesses_.emplace_back(overlap.result().triangleA, overlap.result().triangleB);
+    else
+      witnesses_[nextWitness_] = {overlap.result().triangleA, overlap.result().triangleB};
+    nextWitness_ = (nextWitness_ + 1) % kWitnesses;
+  }
   return false;
 }
 

@@ -44,7 +44,7 @@
 #include "mink/core/expansion.hpp"
 #include "mink/core/orientation.hpp"
 #include "mink/cpd/convolution.hpp"
-#include "mink/cpd/detail/box_tree.hpp"
+#include "mink/mesh/detail/box_tree.hpp"
 #include "mink/cpd/minkowski_patch.hpp"
 #include "mink/mesh/mesh_overlap.hpp"
 
@@ -263,7 +263,8 @@ class Trimmer {
     hbox_.clear();
     planeCache_.clear();
     exactSide_.clear();
-    witnessA_ = witnessB_ = -1;
+    witnesses_.clear();
+    nextWitness_ = 0;
     final_.clear();
     finalV_.clear();
     finalE_.clear();
@@ -399,7 +400,10 @@ class Trimmer {
   /// The value whose sign (times sign(W)) is side(): see side().
   template <class N>
   N cutValue(int F, std::uint64_t cut, const N X[3], const N& W) const;
-  int constructedSide(int F, int id, std::uint64_t cut) const;
+  /// side() of a constructed corner by the interval filter: ±1, or 0 when it cannot tell.
+  int filteredSide(int F, int id, std::uint64_t cut) const;
+  /// side() of a constructed corner in expansion arithmetic from its name (cached).
+  int exactSide(int F, int id, std::uint64_t cut) const;
   /// Exact sign of (x − p) · (q − p) for corner id and points p, q (ids of a_i − b_j).
   int dotSign(int id, int p, int q) const;
 
@@ -524,7 +528,10 @@ class Trimmer {
   mutable std::vector<PlaneIVCache> planeCache_;  // floating T: per polygon, made on first use
   mutable PlaneIVCache boxCache_[6];
   mutable std::unordered_map<TrimKey, int, TrimKeyHash> exactSide_;  // (corner, cut, F) -> exact side
-  mutable int witnessA_ = -1, witnessB_ = -1;  // the last triangle pair found overlapping
+  // The last triangle pairs found overlapping (a ring of kWitnesses).
+  static constexpr std::size_t kWitnesses = 16;
+  mutable std::vector<std::pair<int, int>> witnesses_;
+  mutable std::size_t nextWitness_ = 0;
   std::vector<Poly> polys_;
   std::size_t polyCount_ = 0;
   Poly scratch_;

@@ -1,9 +1,10 @@
-// mink/cpd/detail/box_tree.hpp — a static tree of axis-aligned boxes (in double), for the
-// two searches the trimming makes among the convolution facets gathered in a ball: the
-// pairs of facets whose boxes overlap (candidate cutters), and a lower bound on the
-// distance from a point to every facet but a few (how far a point may be moved without
-// crossing one). A search structure only: every decision it feeds is made exactly
-// elsewhere, and it may return more candidates than needed, never fewer.
+// mink/mesh/detail/box_tree.hpp — a static tree of axis-aligned boxes (in double): the
+// triangle pairs of two placed meshes whose boxes overlap (MeshOverlap), and the searches
+// CPD's trimming makes among the convolution facets gathered in a ball (the facets whose
+// boxes overlap a box: candidate cutters; a lower bound on the distance from a point to
+// every facet but a few: how far a point may be moved without crossing one). A search
+// structure only: every decision it feeds is made exactly elsewhere, and it may return
+// more candidates than needed, never fewer.
 //
 // Built top-down: boxes sorted by their centres along the longest axis of their union and
 // split at the median; leaves hold up to kLeafSize boxes. Flat arrays, reused between
@@ -51,9 +52,10 @@ class BoxTree {
  public:
   static constexpr int kLeafSize = 4;
 
-  /// Builds over boxes[0 .. n); item i is boxes[i].
+  /// Builds over boxes[0 .. n) (copied: the tree may outlive or be copied away from
+  /// them); item i is boxes[i].
   void build(const std::vector<Box3>& boxes) {
-    boxes_ = &boxes;
+    boxes_.assign(boxes.begin(), boxes.end());
     items_.resize(boxes.size());
     for (std::size_t i = 0; i < boxes.size(); ++i) items_[i] = static_cast<int>(i);
     nodes_.clear();
@@ -72,7 +74,7 @@ class BoxTree {
       if (!n.box.overlaps(query)) continue;
       if (n.count > 0) {
         for (int k = n.first; k < n.first + n.count; ++k)
-          if ((*boxes_)[static_cast<std::size_t>(items_[static_cast<std::size_t>(k)])].overlaps(query))
+          if (boxes_[static_cast<std::size_t>(items_[static_cast<std::size_t>(k)])].overlaps(query))
             visit(items_[static_cast<std::size_t>(k)]);
       } else {
         stack_.push_back(n.left);
@@ -97,7 +99,7 @@ class BoxTree {
       if (n.count > 0) {
         for (int k = n.first; k < n.first + n.count; ++k) {
           const int i = items_[static_cast<std::size_t>(k)];
-          if ((*boxes_)[static_cast<std::size_t>(i)].squaredDistance(p) >= best) continue;
+          if (boxes_[static_cast<std::size_t>(i)].squaredDistance(p) >= best) continue;
           best = std::min(best, dist(i));
         }
       } else {
@@ -121,6 +123,7 @@ class BoxTree {
   /// true; returns whether it did. Nodes are descended larger box first.
   template <class Leaf>
   bool anyPair(const BoxTree& other, const Eigen::Vector3d& offset, double pad, Leaf&& leaf) const {
+    pairsVisited_ = 0;
     if (nodes_.empty() || other.nodes_.empty()) return false;
     pairStack_.clear();
     pairStack_.push_back({0, 0});
@@ -132,16 +135,17 @@ class BoxTree {
     while (!pairStack_.empty()) {
       const auto [na, nb] = pairStack_.back();
       pairStack_.pop_back();
+      ++pairsVisited_;
       const Node& a = nodes_[static_cast<std::size_t>(na)];
       const Node& b = other.nodes_[static_cast<std::size_t>(nb)];
       if (apart(a.box, b.box)) continue;
       if (a.count > 0 && b.count > 0) {
         for (int ka = a.first; ka < a.first + a.count; ++ka) {
           const int i = items_[static_cast<std::size_t>(ka)];
-          const Box3& bi = (*boxes_)[static_cast<std::size_t>(i)];
+          const Box3& bi = boxes_[static_cast<std::size_t>(i)];
           for (int kb = b.first; kb < b.first + b.count; ++kb) {
             const int j = other.items_[static_cast<std::size_t>(kb)];
-            if (apart(bi, (*other.boxes_)[static_cast<std::size_t>(j)])) continue;
+            if (apart(bi, other.boxes_[static_cast<std::size_t>(j)])) continue;
             if (leaf(i, j)) return true;
           }
         }
@@ -158,6 +162,8 @@ class BoxTree {
     }
     return false;
   }
+  /// Node pairs the last anyPair() popped.
+  long long pairsVisited() const { return pairsVisited_; }
 
  private:
   struct Node {
@@ -170,7 +176,7 @@ class BoxTree {
     const int id = static_cast<int>(nodes_.size());
     nodes_.emplace_back();
     Box3 box;
-    for (int k = first; k < first + count; ++k) box.add((*boxes_)[static_cast<std::size_t>(items_[static_cast<std::size_t>(k)])]);
+    for (int k = first; k < first + count; ++k) box.add(boxes_[static_cast<std::size_t>(items_[static_cast<std::size_t>(k)])]);
     nodes_[static_cast<std::size_t>(id)].box = box;
     if (count <= kLeafSize) {
       nodes_[static_cast<std::size_t>(id)].first = first;
@@ -183,7 +189,7 @@ class BoxTree {
     if (ext[2] > ext[axis]) axis = 2;
     const int mid = first + count / 2;
     auto centre = [&](int i) {
-      const Box3& b = (*boxes_)[static_cast<std::size_t>(i)];
+      const Box3& b = boxes_[static_cast<std::size_t>(i)];
       return b.lo[axis] + b.hi[axis];
     };
     std::nth_element(items_.begin() + first, items_.begin() + mid, items_.begin() + first + count,
@@ -195,11 +201,12 @@ class BoxTree {
     return id;
   }
 
-  const std::vector<Box3>* boxes_ = nullptr;
+  std::vector<Box3> boxes_;
   std::vector<int> items_;
   std::vector<Node> nodes_;
   mutable std::vector<int> stack_;
   mutable std::vector<std::pair<int, int>> pairStack_;
+  mutable long long pairsVisited_ = 0;
 };
 
 }  // namespace detail
