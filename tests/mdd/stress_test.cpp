@@ -1400,7 +1400,10 @@ TEST(MddStress, FloatRoundedEllipsoidInDouble) {
 TEST(MddStress, DegenerateContacts) {
   Family fam("degenerate contacts (resting, caps, line, apexes, boxes)", kRotationBound, "shape size 2");
   for (const std::string& family : mink_test::degenerateFamilies()) {
-    for (int n : {5, 12}) {
+    // 40, cones only: an apex of degree 40 against another's, where SEARCH-EE chases the
+    // two Gauss regions (mdd/detail/region_crossings.hpp) instead of testing 1600 pairs.
+    for (int n : {5, 12, 40}) {
+      if (n == 40 && family != "cones-apex") continue;
       for (bool generic : {false, true}) {
         const mink_test::ContactScene sc = mink_test::degenerateScene(family, n, generic);
         Placement<double> su;
@@ -1411,7 +1414,10 @@ TEST(MddStress, DegenerateContacts) {
         const Built<double> b(su);
         std::vector<Query<double>> qs;
         for (const Vec3d& s : sc.dirs) qs.push_back({sc.tQ, s, "s"});
-        for (const auto& r : runQueries(fam, b, qs, 2.0)) EXPECT_FALSE(r.usedFallback) << su.label;
+        for (const auto& r : runQueries(fam, b, qs, 2.0)) {
+          EXPECT_FALSE(r.usedFallback) << su.label;
+          EXPECT_FALSE(r.usedPairScan) << su.label;
+        }
       }
       if (family == "boxes-aligned") break;
     }

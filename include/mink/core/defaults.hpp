@@ -83,6 +83,13 @@ constexpr int kMddExitPortalSteps = 48;
 /// edges per vertex. Safe range: 1 .. 16 (vertices of degree up to it try every pair).
 constexpr int kMddPortalEdgeCandidates = 6;
 
+/// MDD, SEARCH-EE: at a vertex pair whose degrees both exceed this, the EE faces are
+/// found by chasing the two Gauss regions' boundaries (O(deg + deg) pairs tested,
+/// mdd/detail/region_crossings.hpp) instead of testing every pair; below it all pairs are
+/// cheaper, and with one degree at most this, all pairs are linear in the other. Both
+/// find the same faces. Unit: edges at a vertex. Safe range: >= 2.
+constexpr int kMddChaseMinDegree = 6;
+
 /// MDD, inexact scalars: an edge pair of P and Q whose directions make a sine below this
 /// many eps is treated as parallel (no EE face): its cross product is rounding noise.
 /// Unit: multiples of eps. Safe range: 4 .. 1e4.

@@ -116,6 +116,7 @@ class MddQuery {
     }
     const long long faces = P.numFaces() + Q.numFaces() + 64;
     cap_ = opt.maxVisits >= 0 ? opt.maxVisits : defaults::kMddVisitFactor * faces;
+    autoCap_ = opt.maxVisits < 0;
     const long long pairs = static_cast<long long>(P.numEdges()) * static_cast<long long>(Q.numEdges());
     exhaustiveAllowed_ = pairs <= (opt.maxExhaustivePairs >= 0 ? opt.maxExhaustivePairs : defaults::kMddExhaustivePairs);
     const auto b = orthogonalBasis(s);
@@ -205,9 +206,19 @@ class MddQuery {
     const MFace<T> vf = searchVF(F_, obj, g0, hintP, cache_.marksQ, budget, res_.visitedVF);
     if (stopped()) return MFace<T>();
     const MFace<T>& start = obj.better(vf, fv) ? vf : fv;
-    MFace<T> best = searchEE(F_, obj, start, cache_.marksEE, cache_.edgesP, cache_.edgesQ, budget,
-                             res_.visitedEE);
-    if (stopped() || budget.exhausted) return MFace<T>();
+    MFace<T> best = searchEE(F_, obj, start, cache_.marksEE, cache_.crossings, budget,
+                             res_.visitedEE, res_.usedPairScan);
+    if (stopped()) return MFace<T>();
+    if (budget.exhausted) {
+      // The automatic cap ended a walk (through faces tied to rounding: a line through a
+      // vertex of M where two cones' apexes meet, every face around it an exit, each step
+      // a few ulps better than the last). Its best face still answers if the line crosses
+      // its facet: a supporting plane of M whose facet the line crosses is where the ray
+      // leaves M, however the face was found. A cap the caller set is respected.
+      if (!autoCap_ || !(obj.num(best) > T(0)) || !exitHit(best)) return MFace<T>();
+      cache_.faceP = best.type == MddFaceType::FV ? best.a : fv.a;
+      return remember(best);
+    }
     if (!(obj.num(best) > T(0)) || !exitHit(best)) {
       res_.usedFallback = true;
       if (!exhaustiveAllowed_) return MFace<T>();  // too many edge pairs: IterationLimit
@@ -780,6 +791,7 @@ class MddQuery {
   std::vector<std::pair<T, MFace<T>>> tiesScratch_;
   bool checkFailed_ = false;
   bool exhaustiveAllowed_ = true;
+  bool autoCap_ = true;  // the visit cap is the automatic one (MddOptions::maxVisits < 0)
 };
 
 /// |s| for reporting. Exact T has no sqrt: exact when |s|^2 == 1, otherwise a Newton

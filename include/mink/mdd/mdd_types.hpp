@@ -10,6 +10,7 @@
 #include "mink/core/scalar_traits.hpp"
 #include "mink/core/types.hpp"
 #include "mink/mdd/detail/difference_polygon.hpp"
+#include "mink/mdd/detail/region_crossings.hpp"
 
 namespace mink {
 
@@ -88,6 +89,11 @@ struct MddResult {
   /// FV, VF and EE faces answered instead, or the chord of M (the line clipped by every
   /// face plane of M) did.
   bool usedFallback = false;
+  /// True when SEARCH-EE tested all deg(u) · deg(w) edge pairs at a vertex pair whose
+  /// degrees both exceed defaults::kMddChaseMinDegree (quadratic in the degrees): the
+  /// chase of their Gauss regions (mdd/detail/region_crossings.hpp) could not run there,
+  /// the two regions not fitting in one hemisphere together.
+  bool usedPairScan = false;
   /// Support queries on M made by the exit-portal estimates (mdd/exit_portal.hpp), the
   /// starting points of the searches; 0 when a cached face answered.
   int portalSteps = 0;
@@ -185,7 +191,8 @@ struct MddCache {
   const void* shapeQ = nullptr;
   detail::EpochMarks marksP, marksQ;
   detail::PairMarks marksEE;
-  std::vector<int> edgesP, edgesQ;  // SEARCH-EE candidate edge buffers
+  std::vector<int> edgesP, edgesQ;  // EE candidate edge buffers of the portal start
+  detail::RegionCrossings<T> crossings;  // SEARCH-EE's chase at high-degree vertex pairs
   // Facet-check and grazing buffers.
   std::vector<int> setP, setQ;
   std::vector<std::pair<std::pair<T, T>, int>> points2, hull2;
