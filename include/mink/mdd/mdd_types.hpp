@@ -136,6 +136,13 @@ class PairMarks {
     return true;
   }
 
+  /// Calls f(a, b) for every pair marked since the last reset.
+  template <class F>
+  void forEach(F&& f) const {
+    for (std::size_t i = 0; i < keys_.size(); ++i)
+      if (stamp_[i] == epoch_) f(static_cast<int>(keys_[i] >> 32), static_cast<int>(keys_[i] & 0xffffffffu));
+  }
+
  private:
   static std::size_t hash(std::uint64_t k) {
     k ^= k >> 33;
@@ -161,17 +168,50 @@ class PairMarks {
   std::uint32_t epoch_ = 0;
   std::size_t count_ = 0;
 };
-/// Marks on ids (faces or vertices of one shape) with the same O(1) clearing. Hashed,
-/// not an array indexed by id: a query touches a few dozen ids, and sizing an array to a
-/// 100k-vertex shape would cost a cold query (no cache kept) O(n) time and memory.
+/// Marks on ids (faces or vertices of one shape) with the same O(1) clearing. Hashed at
+/// first, not an array indexed by id: a query touches a few dozen ids, and sizing an
+/// array to a 100k-vertex shape would cost a cold query (no cache kept) O(n) time and
+/// memory. Once a pass marks more than an eighth of the ids (the support set of a
+/// 1024-gon cap: thousands of hashed inserts and rehashes, most of a resting contact's
+/// query), the marks move to an array of epoch stamps, which then serves every later
+/// pass over at most as many ids: its O(n) cost is paid only where a pass is O(n) anyway.
 class EpochMarks {
  public:
-  void reset(std::size_t /*ids*/) { set_.reset(); }
+  void reset(std::size_t ids) {
+    ids_ = ids;
+    count_ = 0;
+    dense_ = !stamp_.empty() && ids <= stamp_.size();
+    if (!dense_) {
+      set_.reset();
+    } else if (++epoch_ == 0) {
+      std::fill(stamp_.begin(), stamp_.end(), 0u);
+      epoch_ = 1;
+    }
+  }
   /// True if i was not marked yet (and marks it).
-  bool mark(int i) { return set_.mark(i, 0); }
+  bool mark(int i) {
+    if (dense_) {
+      if (stamp_[static_cast<std::size_t>(i)] == epoch_) return false;
+      stamp_[static_cast<std::size_t>(i)] = epoch_;
+      return true;
+    }
+    if (!set_.mark(i, 0)) return false;
+    if (++count_ * 8 > ids_) toArray();
+    return true;
+  }
 
  private:
+  void toArray() {
+    stamp_.assign(ids_, 0u);
+    epoch_ = 1;
+    set_.forEach([&](int i, int) { stamp_[static_cast<std::size_t>(i)] = epoch_; });
+    dense_ = true;
+  }
   PairMarks set_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t epoch_ = 0;
+  std::size_t ids_ = 0, count_ = 0;
+  bool dense_ = false;
 };
 }  // namespace detail
 
