@@ -179,7 +179,7 @@ class MddQuery {
       if (est.vertexP >= 0) {
         MFace<T> hit;
         if (!tryAround(est, obj, budget, f0, g0, hit)) return MFace<T>();
-        if (hit.valid()) return remember(hit);
+        if (hit.valid()) return remember(hit, MddPath::Certificate);
       }
       // 2. Else the exit portal, unless the shapes are large and a kept face gave a start:
       //    then the searches walk from there, a few faces instead of dozens of
@@ -190,7 +190,7 @@ class MddQuery {
         res_.portalSteps += est.steps;
         MFace<T> hit;
         if (!tryAround(est, obj, budget, f0, g0, hit)) return MFace<T>();
-        if (hit.valid()) return remember(hit);
+        if (hit.valid()) return remember(hit, MddPath::Certificate);
       }
     } else {
       // Initial face (section VI-A): around P's support vertex along σ, or the cached one.
@@ -217,10 +217,12 @@ class MddQuery {
       // leaves M, however the face was found. A cap the caller set is respected.
       if (!autoCap_ || !(obj.num(best) > T(0)) || !exitHit(best)) return MFace<T>();
       cache_.faceP = best.type == MddFaceType::FV ? best.a : fv.a;
-      return remember(best);
+      return remember(best, MddPath::Search);
     }
+    MddPath path = MddPath::Search;
     if (!(obj.num(best) > T(0)) || !exitHit(best)) {
       res_.usedFallback = true;
+      path = MddPath::Exhaustive;
       if (!exhaustiveAllowed_) return MFace<T>();  // too many edge pairs: IterationLimit
       best = exhaustive(obj);
       if (stopped()) return MFace<T>();
@@ -230,7 +232,7 @@ class MddQuery {
       }
     }
     cache_.faceP = best.type == MddFaceType::FV ? best.a : fv.a;
-    return remember(best);
+    return remember(best, path);
   }
 
   /// The face of M named by a cached (type, a, b), rebuilt for the current pose (its
@@ -771,8 +773,10 @@ class MddQuery {
     return d1 >= T(0) ? a > b : a < b;
   }
   /// Keeps the last two exit faces in the cache (a penetrating query has two), to be
-  /// certified first by the next query of the pair.
-  const MFace<T>& remember(const MFace<T>& f) {
+  /// certified first by the next query of the pair; `path` found f (the result keeps the
+  /// costliest path of its exits).
+  const MFace<T>& remember(const MFace<T>& f, MddPath path) {
+    if (static_cast<int>(path) > static_cast<int>(res_.path)) res_.path = path;
     cache_.exitFaces[1] = cache_.exitFaces[0];
     cache_.exitFaces[0] = MddCachedFace{f.type, f.a, f.b};
     return f;
@@ -948,6 +952,7 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
       res.witnessP = toWorld(query.witnessP());
       res.witnessQ = toWorld(query.witnessQ());
       res.fromCache = true;
+      res.path = MddPath::Cache;
       return finish(answer->k / answer->N.dot(sl));
     }
     res.visitedFV = res.visitedVF = res.visitedEE = 0;
@@ -972,6 +977,7 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
     if constexpr (!ScalarTraits<T>::isExact) {
       if (query.exhaustiveAllowed() && (query.checkFailed() || options.maxVisits < 0)) {
         res.usedFallback = true;  // the chord visits every edge pair
+        res.path = MddPath::Chord;
         detail::MFace<T> lo, hi;
         T tlo = T(0), thi = T(0);
         if (!query.chord(tlo, thi, lo, hi)) return noContact();
@@ -1015,6 +1021,7 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
       }
     }
     res.status = MddStatus::IterationLimit;
+    res.path = MddPath::None;
     return res;
   };
   // The line lies in the supporting plane w·x = k of M (k = 0 up to rounding): it meets
@@ -1022,6 +1029,7 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
   auto fromGrazing = [&](const Vec3<T>& wIn) {
     // To unit order: w's norm scales the support sets' slack.
     const Vec3<T> w = detail::unitOrder(wIn);
+    res.path = MddPath::Grazing;
     T tlo, thi;
     int vp, vq;
     if (!query.grazing(w, tlo, thi, vp, vq)) return noContact();

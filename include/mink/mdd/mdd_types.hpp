@@ -23,6 +23,21 @@ enum class MddStatus {
   IterationLimit  ///< a search hit its iteration cap, or needed a fallback over more edge pairs than MddOptions::maxExhaustivePairs
 };
 
+/// Which step of mdd() answered (MddResult::path), from the cheapest: each exit of M along
+/// the line (two for a penetrating query) is found by one of them, and the result names
+/// the costliest that ran.
+enum class MddPath {
+  None,         ///< NoContact from the centre of duality, or IterationLimit
+  Cache,        ///< the faces kept in the MddCache, certified again (fromCache)
+  Certificate,  ///< a face at the exit-portal estimate's (or a kept face's) support
+                ///< vertices whose facet the line crosses, accepted without a search
+  Search,       ///< SEARCH-FV, SEARCH-VF, SEARCH-EE (faceType says which kind of face),
+                ///< their answer accepted by the facet check
+  Exhaustive,   ///< every FV, VF and EE face examined (usedFallback)
+  Chord,        ///< the line clipped by every face plane of M (usedFallback)
+  Grazing       ///< the line in a supporting plane of M: read off that facet (case 2)
+};
+
 /// Type of the face of M that the line of s hits (MDD paper section II-C).
 enum class MddFaceType {
   None,  ///< NoContact or IterationLimit
@@ -89,6 +104,9 @@ struct MddResult {
   /// FV, VF and EE faces answered instead, or the chord of M (the line clipped by every
   /// face plane of M) did.
   bool usedFallback = false;
+  /// Which step answered (see MddPath); with faceType, what the paper's "faces visited"
+  /// counts above were spent on.
+  MddPath path = MddPath::None;
   /// True when SEARCH-EE tested all deg(u) · deg(w) edge pairs at a vertex pair whose
   /// degrees both exceed defaults::kMddChaseMinDegree (quadratic in the degrees): the
   /// chase of their Gauss regions (mdd/detail/region_crossings.hpp) could not run there,
