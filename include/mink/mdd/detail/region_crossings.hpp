@@ -11,18 +11,20 @@
 //      of the faces around w (Q's, in P's frame); both put counter-clockwise seen from
 //      outside the sphere.
 //   2. A direction h with h·x > 0 at every corner of both is sought (mean corners, then
-//      perceptron steps); through it both regions are plane convex polygons (central projection
-//      maps great circles to lines and keeps orientation), so the planar algorithm
+//      perceptron steps); through it both regions are plane convex polygons (central
+//      projection maps great circles to lines and keeps orientation), so the planar algorithm
 //      applies with its tests as signs of 3x3 determinants of the corners:
 //      "x left of edge a1→a" = det[a1 a x] > 0, "edge A turns left to edge B" =
 //      det[h, a × a1, b × b1] > 0.
 //   3. Each step tests the current pair exactly (PairFrame::ee) and advances one edge by
 //      the algorithm's rules; after the first crossing the chase runs one more full
-//      cycle. At most 2 (deg u + deg w) pairs are tested; every crossing pair is among
-//      them.
+//      cycle. At most 4 (deg u + deg w) pairs are tested (half of them up to the first
+//      crossing); every crossing pair is among them (tests/mdd/region_crossings_test.cpp
+//      checks this against all pairs).
 // The advance rules only choose which pairs are tested; whether a pair is an EE face is
-// always decided by PairFrame::ee on its own. If no such h is found (regions that do not
-// fit in one hemisphere together, then far apart) the caller tests all pairs.
+// always decided by PairFrame::ee on its own. If no such h is found (the regions fit in
+// no open hemisphere together, or only with a margin below what the capped perceptron
+// reaches) the caller tests all pairs, and says so (MddResult::usedPairScan).
 #pragma once
 
 #include <algorithm>
