@@ -441,6 +441,8 @@ void printScene() {
 
 // MINK_FUZZ_VERBOSE=1: print every decoded scene and each update's outcome (replaying).
 const bool gVerbose = std::getenv("MINK_FUZZ_VERBOSE") != nullptr;
+// MINK_FUZZ_STRICT=1: also check what the open bugs below break (for checking a fix).
+const bool gStrict = std::getenv("MINK_FUZZ_STRICT") != nullptr;
 
 // ---------------------------------------------------------------------------------------
 // Exact signs in __float128 (113-bit significand, exponent to ±16382): a product of two
@@ -700,6 +702,14 @@ const char* methodName(mink::LocalSumMethod m) {
   }
 }
 
+// Open bug (fuzz/regressions_mesh_open/, README): the trimming's ball test
+// (cpd/detail/trimming.hpp, Trimmer::polygonMeetsBall) compares h² with r² |n|², where n
+// is a cross product of the piece's sides: |n|² ~ L⁴ overflows to inf for scenes beyond
+// 2^256 (1e77, still accepted), inf <= inf holds, and pieces far outside the ball are kept.
+// Until it is fixed, "misses the ball" is not checked on such scenes unless
+// MINK_FUZZ_STRICT is set.
+bool knownHugeSceneBug(LD L) { return !gStrict && L >= std::ldexp(1.0L, 250); }
+
 // Checks one returned patch on its own; returns its summary.
 Summary checkPatch(const mink::LocalMinkowskiSum<double>& lms, const mink::MinkowskiPatch<double>& P,
                    const mink::Pose<double>& pA, const mink::Pose<double>& pB, const V& centre, double radius,
@@ -724,7 +734,7 @@ Summary checkPatch(const mink::LocalMinkowskiSum<double>& lms, const mink::Minko
       if (tri[k] < 0 || tri[k] >= nv) fail("patch triangle " + std::to_string(t) + " has index out of range" + where);
     const VL a = P.vertices[tri[0]].cast<LD>(), b = P.vertices[tri[1]].cast<LD>(), d = P.vertices[tri[2]].cast<LD>();
     const LD dist = triangleDistance(c, a, b, d);
-    if (dist > static_cast<LD>(radius) + slack) {
+    if (dist > static_cast<LD>(radius) + slack && !(knownHugeSceneBug(L))) {
       char buf[200];
       std::snprintf(buf, sizeof buf, ": distance %.17Lg from the centre, radius %.17g", dist, radius);
       fail("patch triangle " + std::to_string(t) + " misses the ball" + where + buf);
@@ -745,8 +755,6 @@ Summary checkPatch(const mink::LocalMinkowskiSum<double>& lms, const mink::Minko
 // throws "fromPoints: need at least 4 points" or gathers from a wrong map. Until it is
 // fixed, the ConvexMaps method's answers on such meshes are not compared (its crashes and
 // sanitizer reports still fail), unless MINK_FUZZ_STRICT is set.
-const bool gStrict = std::getenv("MINK_FUZZ_STRICT") != nullptr;
-
 bool normalsOutOfUnitRange(const Mesh& X) {
   for (int t = 0; t < X.numTriangles(); ++t) {
     const double m = X.triangleNormal(t).cwiseAbs().maxCoeff();
@@ -786,6 +794,10 @@ void checkUpdates(const Mesh& A, const Mesh& B, Decoder& in, int unitExp) {
   } else {
     radius = std::ldexp(1.0 + in.i8() / 128.0, unitExp);
   }
+  // Time bound: a ball holding most of M costs seconds per update (ASan build) once the
+  // meshes have more than about 150 triangle pairs; there it is capped at 2 units.
+  if (A.numTriangles() * B.numTriangles() > 150 && radius > std::ldexp(2.0, unitExp) && std::isfinite(radius))
+    radius = std::ldexp(2.0, unitExp);
   gScene.poses[0] = pA;
   gScene.poses[1] = pB;
   gScene.poses[2] = pA2;
