@@ -3,9 +3,9 @@
 #   1. Release, everything (tests, benchmarks, examples) in build/, then ctest;
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer (-O1 -g, assertions on), tests only,
 #      in build-asan/, then ctest without the package test;
-#   3. the libFuzzer target (fuzz/run_fuzz.sh: clang, replays fuzz/corpus/ and
-#      fuzz/regressions/, then fuzzes a fixed sequence: MINK_FUZZ_SEED=1, MINK_FUZZ_RUNS=10000,
-#      at most MINK_FUZZ_SECONDS=60) in build-fuzz/.
+#   3. the libFuzzer targets (fuzz/run_fuzz.sh: clang; mink_mdd_fuzz and mink_mesh_fuzz
+#      each replay their seeds and regressions, then fuzz a fixed sequence: MINK_FUZZ_SEED=1,
+#      MINK_FUZZ_RUNS=10000 per target, at most MINK_FUZZ_SECONDS=60 in all) in build-fuzz/.
 # On Debian/Ubuntu, when run as root, it first installs missing build dependencies with
 # apt-get (nothing is installed when they are all present). A configure or build error
 # stops it at once; failing tests of the first run do not keep the second from running.
@@ -48,7 +48,7 @@ echo "== run_all.sh: libFuzzer (fuzz/run_fuzz.sh, seed ${MINK_FUZZ_SEED:-1}, ${M
 fuzz_result=passed
 # A fixed seed: CI replays the same (clean) sequence of inputs every time, so a red run
 # means a change broke something; exploration with fresh seeds is a local job
-# (fuzz/README.md), and its findings go to fuzz/regressions/ once fixed.
+# (fuzz/README.md), and its findings go to fuzz/regressions/ (regressions_mesh/) once fixed.
 MINK_FUZZ_SEED="${MINK_FUZZ_SEED:-1}" MINK_FUZZ_RUNS="${MINK_FUZZ_RUNS:-10000}" MINK_FUZZ_BUILD_DIR="$root/build-fuzz" MINK_JOBS="$jobs" bash "$repo/fuzz/run_fuzz.sh" || fuzz_result=FAILED
 
 echo "== run_all.sh: Release tests $release_tests, ASan+UBSan tests $sanitizer_tests, fuzzing $fuzz_result"
