@@ -40,7 +40,10 @@
 //      ConvexMaps; BruteForce only when both meshes have at most 40 triangles) must
 //      gather the same convolution facets and return the same number of triangles with
 //      the same total area (1e-9 relative). update() runs twice, the second time after a
-//      small motion, which exercises ConvexMaps' coherent walk from the last cells.
+//      small motion, which exercises ConvexMaps' coherent walk from the last cells
+//      (SphereTree, rebuilt on every call, only the first time).
+// Three open library bugs (fuzz/README.md, inputs in regressions_mesh_open/) are bounded
+// where marked "Open bug" / "Time bound" below; MINK_FUZZ_STRICT=1 lifts the bounds.
 
 #include <algorithm>
 #include <climits>
@@ -659,6 +662,7 @@ struct Summary {
   LD area = 0;
   LD slack = 0;        // the distance slack of the ball test
   bool known = false;  // an answer of the open ConvexMaps bug: not compared
+  bool skipped = false;  // not asked
 };
 
 std::string facetName(const std::array<int, 3>& f) {
@@ -726,7 +730,9 @@ Summary checkPatch(const mink::LocalMinkowskiSum<double>& lms, const mink::Minko
   // The work is done in A's frame and rotated back by poseA: rounding of the scene, and
   // for a rotation e off orthonormal (e <= 1e-6 accepted), lengths off by up to e.
   const LD e = orthoError(pA.rotation) + orthoError(pB.rotation);
-  const LD slack = static_cast<LD>(radius) * 1e-9L + (1e-13L + 4 * e) * L;
+  // 2^-1040 absolute: constructed points of a scene in the denormal range round to
+  // multiples of 2^-1074.
+  const LD slack = static_cast<LD>(radius) * 1e-9L + (1e-13L + 4 * e) * L + std::ldexp(1.0L, -1040);
   const VL c = centre.cast<LD>();
   for (std::size_t t = 0; t < P.triangles.size(); ++t) {
     const Tri& tri = P.triangles[t];
@@ -794,9 +800,11 @@ void checkUpdates(const Mesh& A, const Mesh& B, Decoder& in, int unitExp) {
   } else {
     radius = std::ldexp(1.0 + in.i8() / 128.0, unitExp);
   }
-  // Time bound: a ball holding most of M costs seconds per update (ASan build) once the
-  // meshes have more than about 150 triangle pairs; there it is capped at 2 units.
-  if (A.numTriangles() * B.numTriangles() > 150 && radius > std::ldexp(2.0, unitExp) && std::isfinite(radius))
+  // Time bound: a ball holding most of M costs seconds per update under ASan once the
+  // meshes have more than 48 triangle pairs (and 12 s at -O1 without ASan for two boxes
+  // posed by a quaternion 90° turn, the open slow case in the README); there the radius
+  // is capped at 2 units, except with MINK_FUZZ_STRICT.
+  if (!gStrict && A.numTriangles() * B.numTriangles() > 48 && radius > std::ldexp(2.0, unitExp) && std::isfinite(radius))
     radius = std::ldexp(2.0, unitExp);
   gScene.poses[0] = pA;
   gScene.poses[1] = pB;
@@ -828,6 +836,13 @@ void checkUpdates(const Mesh& A, const Mesh& B, Decoder& in, int unitExp) {
     std::vector<Summary> out;
     for (std::size_t k = 0; k < methods.size(); ++k) {
       Summary s;
+      // The second update is there for ConvexMaps' coherent walk; SphereTree, which
+      // rebuilds every call, is asked once (a fifth of the time saved).
+      if (step == 1 && methods[k] == mink::LocalSumMethod::SphereTree) {
+        s.skipped = true;
+        out.push_back(std::move(s));
+        continue;
+      }
       const mink::MinkowskiPatch<double>* P = nullptr;
       const auto t0 = std::chrono::steady_clock::now();
       try {
@@ -860,7 +875,7 @@ void checkUpdates(const Mesh& A, const Mesh& B, Decoder& in, int unitExp) {
     // it may drop facets whose box meets the region box, but only ones that miss the ball.
     const std::size_t ref = methods[0] == mink::LocalSumMethod::BruteForce ? 0 : methods.size() - 1;
     for (std::size_t k = 0; k < out.size(); ++k) {
-      if (k == ref || out[k].known || out[ref].known) continue;
+      if (k == ref || out[k].known || out[ref].known || out[k].skipped) continue;
       const std::string pair = std::string(methodName(methods[k])) + " vs " + methodName(methods[ref]);
       if (out[k].threw != out[ref].threw) fail("one method threw and another did not: " + pair);
       if (out[k].threw) continue;
