@@ -42,7 +42,7 @@
 //      the same total area (1e-9 relative). update() runs twice, the second time after a
 //      small motion, which exercises ConvexMaps' coherent walk from the last cells
 //      (SphereTree, rebuilt on every call, only the first time).
-// Three open library bugs (fuzz/README.md, inputs in regressions_mesh_open/) are bounded
+// Three of the open library bugs (fuzz/README.md, inputs in regressions_mesh_open/) are bounded
 // where marked "Open bug" / "Time bound" below; MINK_FUZZ_STRICT=1 lifts the bounds.
 
 #include <algorithm>
