@@ -1,0 +1,654 @@
+// mink_cpd_bench — the CPD paper's Table 2 (Lee, Behar, Lien, Kim, CAD 2016, section 7.1):
+// the time to build the boundary of M = A ⊕ −B, whole or only inside an ε-ball of radius
+// 50 with M's bounding sphere of radius about 250, on four scenes, side by side with the
+// paper's numbers, plus a degenerate family (coplanar facets everywhere) beside its
+// generic twins.
+//
+// Scenes (A fixed at the identity, B moving; procedural shapes: tests/support/mesh_shapes.hpp,
+// the duck: tests/data/duck.obj, Bullet's zlib-licensed mesh, standing in for the paper's fish):
+//   cone/axes     axes (60 triangles; paper 36) and a cone of 1000 triangles, apex down in
+//                 an arm; the cone slides along the arm while turning.
+//   spoon/cup     a cup of 1024 triangles and a spoon of 1316 (paper 1K / 1.3K), the spoon
+//                 leaning on the inner wall and turning about its own long axis.
+//   duck/torus    a torus of 1600 triangles (paper 1.6K) and the duck, 4212 triangles
+//                 (the paper's fish has 950), sunk into the hole, turning about the vertical.
+//   torus/torus   two interlocked tori of 2000 triangles (paper 2K each), one turning
+//                 about the other's axis.
+//   degenerate:   an axis-aligned box resting face to face on an L-block and on a larger
+//                 box (every contact facet coplanar, integer coordinates after scaling),
+//                 sliding; each beside the same scene with the box turned by a small
+//                 generic rotation.
+// Placement: B's start pose is found by moving it along an approach direction until it
+// touches A (bisection with MeshOverlap) and pushing it in by a stated depth; then every
+// coordinate is scaled so that the smallest enclosing sphere of the points a_i − b_j (that
+// of M) has radius 250 at frame 0 (an integer factor for the degenerate family, so the
+// coplanarity stays exact).
+// The ball: radius 50, centred on each frame at the exit point of the origin along the
+// way B backs out (the least s >= 0 with B moved by s·(−approach) clear of A, by
+// bisection with MeshOverlap): a point of ∂M at the contact, which follows it along the
+// motion. The centres are computed before any timing, so every method gets the same inputs.
+// Columns (per update, double):
+//   full         minkowskiBoundary (cpd/minkowski_boundary.hpp) at a few frames;
+//   cgal         CGAL minkowski_sum_3 (Nef polyhedra, Epeck; tests/support/minkowski_reference.hpp)
+//                at frame 0, run in a child process stopped after --cgal-timeout seconds;
+//   brute        LocalMinkowskiSum, LocalSumMethod::BruteForce (every feature pair tested);
+//   sphere_tree  LocalSumMethod::SphereTree (Theorem 2 culling, from scratch each frame);
+//   convex_maps  LocalSumMethod::ConvexMaps, one object along the motion (coherent: each
+//                feature walked from its cell of the last frame); its first call, which
+//                also builds the two convex maps, is reported apart (convex_maps_first).
+// Agreement: on every frame brute, sphere_tree and convex_maps must give the same facet
+// count, triangle count and patch area (relative 1e-9); a WARNING line says otherwise.
+// On the degenerate scenes mink's whole boundary is also compared with CGAL's area.
+// Timing: thread CPU time (CLOCK_THREAD_CPUTIME_ID; the machine is shared), wall time in
+// the CSV too. Medians with quartiles over the frames. Each column runs in a child process
+// that is stopped after a wall-time limit (a single update can take minutes): the frames
+// that finished are kept, and a column with none reads "stopped after S s", a lower bound.
+//
+// Usage: mink_cpd_bench [out.csv] [--quick] [--frames N] [--full-timeout S]
+//                       [--cgal-timeout S] [--method-timeout S] [--only SCENE] [--verbose]
+//   out.csv           default benchmarks/results/cpd_table2.csv (directory must exist)
+//   --frames          frames of each motion (default 30)
+//   --full-timeout    wall-time limit of the whole boundary's child, per scene (default 45)
+//   --cgal-timeout    the same for CGAL (default 30)
+//   --method-timeout  the same for each local method (default 30)
+//   --only            run one scene (its name as printed, e.g. torus/torus)
+//   --verbose         every local update's time and sizes on stderr
+//   --quick           8 frames, 2 samples of the whole boundary, 10 s limits, CGAL only on
+//                     the degenerate family (smoke test, numbers not for publication)
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "bench_common.hpp"
+#include "mink/cpd/local_minkowski_sum.hpp"
+#include "mink/cpd/minkowski_boundary.hpp"
+#include "mink/io/triangle_mesh_io.hpp"
+#include "mink/mesh/detail/enclosing_sphere.hpp"
+#include "mink/mesh/mesh_overlap.hpp"
+#include "support/mesh_shapes.hpp"
+#include "support/minkowski_reference.hpp"
+#include "support/patch_measures.hpp"
+
+namespace {
+
+using Mesh = mink::TriangleMesh<double>;
+using Patch = mink::MinkowskiPatch<double>;
+using Pose = mink::Pose<double>;
+using V = Eigen::Vector3d;
+using M3 = Eigen::Matrix3d;
+using mink_test::MeshShape;
+
+constexpr double kPi = 3.141592653589793238462643383279502884;
+constexpr double kMRadius = 250;  // M's enclosing sphere at frame 0 (the paper: <= 250)
+constexpr double kBall = 50;      // the paper's ε-ball radius
+
+M3 rot(double angle, const V& axis) { return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix(); }
+
+double cpuMs() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+double wallMs() {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+MeshShape fromObj(const std::string& file) {
+  const Mesh m = mink::io::readTriangleMesh<double>(std::string(MINK_BENCH_DATA_DIR) + "/" + file);
+  MeshShape s;
+  s.name = file;
+  s.vertices = m.vertices();
+  for (int t = 0; t < m.numTriangles(); ++t) s.triangles.push_back(m.triangle(t));
+  return s;
+}
+
+MeshShape scaled(MeshShape s, double k) {
+  for (auto& v : s.vertices) v *= k;
+  return s;
+}
+
+Mesh toMesh(const MeshShape& s) { return Mesh::fromMesh(s.verticesAs<double>(), s.triangles); }
+
+/// The closest point to p of the triangle a b c (C. Ericson, Real-Time Collision Detection, 5.1.5).
+V closestOnTriangle(const V& p, const V& a, const V& b, const V& c) {
+  const V ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const V bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
+  const V cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  const double den = 1 / (va + vb + vc);
+  return a + ab * (vb * den) + ac * (vc * den);
+}
+
+/// The point of the patch nearest the origin; false if the patch is empty.
+bool nearestToOrigin(const Patch& p, V& out) {
+  double best = INFINITY;
+  for (const auto& t : p.triangles) {
+    const V q = closestOnTriangle(V::Zero(), p.vertices[t[0]], p.vertices[t[1]], p.vertices[t[2]]);
+    if (q.squaredNorm() < best) {
+      best = q.squaredNorm();
+      out = q;
+    }
+  }
+  return best < INFINITY;
+}
+
+struct Scene {
+  std::string name;
+  bool degenerate = false;
+  MeshShape a, b;       // unit scale
+  M3 R0 = M3::Identity();
+  V aim = V::Zero();    // B's translation at which it surely overlaps A (auto placement)
+  V approach = V::Zero();  // unit: B's way in (placement) and, reversed, out (the ball's centre)
+  bool search = true;   // false: t0 = aim, no placement search
+  double reach = 0;     // the search starts at aim − reach·approach (0: far away)
+  double push = 0;      // depth pushed in past the touching contact (unit scale)
+  // B's pose at frame f from the start pose (R0, t0), unit scale.
+  std::function<Pose(int f, const M3& R0, const V& t0)> motion;
+  double paper[4] = {NAN, NAN, NAN, NAN};  // Full, Brute F., BSH, Gap Fill. (ms)
+  bool cgal = false;    // try CGAL minkowski_sum_3 at frame 0
+};
+
+/// Start translation: from aim − D·approach (separated) along `approach` to the first
+/// touching contact (bisection on MeshOverlap), then `push` further.
+V placeB(const Scene& s) {
+  if (!s.search) return s.aim;
+  const Mesh A = toMesh(s.a), B = toMesh(s.b);
+  const double D = s.reach > 0 ? s.reach : 4 * (A.extent() + B.extent()) + 4;
+  const V start = s.aim - D * s.approach;
+  mink::MeshOverlap<double> ov(A, B, s.R0, start);
+  if (ov.overlaps(V::Zero()) || !ov.overlaps(D * s.approach)) {
+    std::printf("scene %s: placement search needs a separated start and an overlapping aim\n", s.name.c_str());
+    std::exit(2);
+  }
+  double lo = 0, hi = D;
+  for (int i = 0; i < 60; ++i) {
+    const double m = 0.5 * (lo + hi);
+    (ov.overlaps(m * s.approach) ? hi : lo) = m;
+  }
+  return start + (hi + s.push) * s.approach;
+}
+
+std::vector<Scene> scenes(bool quick) {
+  (void)quick;
+  std::vector<Scene> out;
+  {
+    Scene s;
+    s.name = "cone/axes";
+    s.a = mink_test::axes(3);
+    s.b = mink_test::cone(500, 1.0, 2.0);
+    s.R0 = rot(kPi, V(1, 0, 0));  // apex down
+    s.aim = V(2, 0, 1.5);
+    s.approach = V(0, 0, -1);
+    s.push = 0.3;
+    s.motion = [](int f, const M3& R0, const V& t0) {
+      Pose p;
+      p.rotation = rot(0.01 * f, V(0.2, 0.3, 1)) * R0;
+      p.translation = t0 + f * V(-0.03, 0, 0);
+      return p;
+    };
+    s.paper[0] = 58.91, s.paper[1] = 16.10, s.paper[2] = 24.23, s.paper[3] = 10.33;
+    s.cgal = true;
+    out.push_back(s);
+  }
+  {
+    Scene s;
+    s.name = "spoon/cup";
+    s.a = mink_test::cup(128, 6.0, 5.4, 10.0, 0.6);
+    s.b = mink_test::spoon(54, 5);
+    s.R0 = rot(-kPi / 3, V(0, 1, 0));  // handle up, leaning
+    s.aim = V(4.5, 0, 4.5);
+    s.approach = V(1, 0, 0);
+    s.reach = 4.5;  // from the cup's axis towards its wall
+    s.push = 0.15;
+    s.motion = [](int f, const M3& R0, const V& t0) {
+      Pose p;
+      p.rotation = R0 * rot(0.012 * f, V(1, 0, 0));  // about the spoon's long axis
+      p.translation = t0;
+      return p;
+    };
+    s.paper[0] = 1393.61, s.paper[1] = 453.29, s.paper[2] = 69.38, s.paper[3] = 13.91;
+    out.push_back(s);
+  }
+  {
+    Scene s;
+    s.name = "duck/torus";
+    s.a = mink_test::torus(40, 20, 0.7, 0.3);
+    s.b = fromObj("duck.obj");
+    s.R0 = rot(kPi / 2, V(1, 0, 0));  // the duck's up (y) along z
+    s.aim = V(0.13, 0.03, -0.9);
+    s.approach = V(0, 0, -1);
+    s.push = 0.05;
+    s.motion = [](int f, const M3& R0, const V& t0) {
+      Pose p;
+      p.rotation = rot(0.02 * f, V(0, 0, 1)) * R0;
+      p.translation = t0;
+      return p;
+    };
+    s.paper[0] = 1719.12, s.paper[1] = 584.39, s.paper[2] = 185.82, s.paper[3] = 28.80;
+    out.push_back(s);
+  }
+  {
+    Scene s;
+    s.name = "torus/torus";
+    s.a = mink_test::torus(50, 20, 2.0, 0.75);
+    s.b = mink_test::torus(50, 20, 2.0, 0.75);
+    s.R0 = rot(kPi / 2, V(1, 0, 0));  // B's ring in the xz plane, through A's hole
+    s.aim = V(1, 0, 0);
+    s.approach = V(-1, 0, 0);
+    s.reach = 1;  // from (2, 0, 0), linked and clear, towards A's inner wall
+    s.push = 0.1;
+    s.motion = [](int f, const M3& R0, const V& t0) {
+      Pose p;
+      const M3 Q = rot(0.02 * f, V(0, 0, 1));  // about A's axis: B travels round A's hole
+      p.rotation = Q * R0;
+      p.translation = Q * t0;
+      return p;
+    };
+    s.paper[0] = 2842.93, s.paper[1] = 1158.74, s.paper[2] = 390.65, s.paper[3] = 36.06;
+    out.push_back(s);
+  }
+  // The degenerate family: B = the box [-1/2, 1/2]^3 resting on A's top face (z = 1),
+  // sliding along x; the twin turns B by a small generic rotation about its centre.
+  auto slide = [](double dx) {
+    return [dx](int f, const M3& R0, const V& t0) {
+      Pose p;
+      p.rotation = R0;
+      p.translation = t0 + V(dx * f, 0, 0);
+      return p;
+    };
+  };
+  const MeshShape cube = mink_test::boxShape(V(-0.5, -0.5, -0.5), V(0.5, 0.5, 0.5));
+  for (int generic = 0; generic < 2; ++generic) {
+    Scene s;
+    s.name = generic ? "box/L-block turned" : "box/L-block";
+    s.degenerate = !generic;
+    s.a = mink_test::lBlock();
+    s.b = cube;
+    s.R0 = generic ? rot(0.05, V(1, 2, 3)) : M3::Identity();
+    s.aim = V(0.5, 0.5, 1.5);
+    s.approach = V(0, 0, -1);
+    s.search = false;
+    s.motion = slide(1.0 / 64);
+    s.cgal = true;
+    out.push_back(s);
+  }
+  for (int generic = 0; generic < 2; ++generic) {
+    Scene s;
+    s.name = generic ? "box/box turned" : "box/box";
+    s.degenerate = !generic;
+    s.a = mink_test::boxShape(V(-1, -1, -1), V(1, 1, 1));
+    s.b = cube;
+    s.R0 = generic ? rot(0.05, V(1, 2, 3)) : M3::Identity();
+    s.aim = V(0, 0, 1.5);
+    s.approach = V(0, 0, -1);
+    s.search = false;
+    s.motion = slide(1.0 / 64);
+    s.cgal = true;
+    out.push_back(s);
+  }
+  return out;
+}
+
+/// The radius of M's enclosing sphere: that of the points a_i − (R b_j + t).
+double mRadius(const MeshShape& a, const MeshShape& b, const M3& R, const V& t) {
+  std::vector<mink::Vec3<double>> pts;
+  pts.reserve(a.vertices.size() * b.vertices.size());
+  for (const V& bj : b.vertices) {
+    const V pb = R * bj + t;
+    for (const V& ai : a.vertices) pts.push_back(ai - pb);
+  }
+  return mink::detail::enclosingSphere(pts.data(), static_cast<int>(pts.size())).radius;
+}
+
+/// One timed call, as the child process reports it (fixed size: written atomically).
+struct Record {
+  double frame, cpu, wall, facets, pieces, tests, nodes, candidates, triangles, area;
+};
+static_assert(sizeof(Record) < 512, "a record must be written atomically (PIPE_BUF)");
+
+Record record(int f, double cpu, double wall, const Patch& P) {
+  return {double(f), cpu, wall, double(P.facetsGathered), double(P.pieces), double(P.overlapTests),
+          double(P.nodePairs), double(P.candidatePairs), double(P.triangles.size()), mink_test::measure(P).area};
+}
+
+/// Runs work(emit) in a child process stopped after timeoutS seconds of wall time; the
+/// records emitted before that. `finished` tells whether the child ran to its end.
+std::vector<Record> inChild(double timeoutS, const std::function<void(const std::function<void(const Record&)>&)>& work,
+                            bool& finished) {
+  std::vector<Record> out;
+  finished = false;
+  int fd[2];
+  if (pipe(fd) != 0) return out;
+  const pid_t pid = fork();
+  if (pid < 0) return out;
+  if (pid == 0) {
+    close(fd[0]);
+    work([&](const Record& r) {
+      if (write(fd[1], &r, sizeof r) != sizeof r) _exit(1);
+    });
+    _exit(0);
+  }
+  close(fd[1]);
+  const double w0 = wallMs();
+  int status = 0;
+  bool done = false;
+  // Drain the pipe while waiting, so that a child with many records never blocks.
+  fcntl(fd[0], F_SETFL, O_NONBLOCK);
+  Record r;
+  auto drain = [&] {
+    while (read(fd[0], &r, sizeof r) == sizeof r) out.push_back(r);
+  };
+  while (wallMs() - w0 < timeoutS * 1e3) {
+    drain();
+    if (waitpid(pid, &status, WNOHANG) == pid) {
+      done = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (!done) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  drain();
+  close(fd[0]);
+  finished = done && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  return out;
+}
+
+struct Stats {
+  std::vector<double> cpu, wall, facets, pieces, tests, nodes, candidates, triangles;
+  void add(const Record& r) {
+    cpu.push_back(r.cpu);
+    wall.push_back(r.wall);
+    facets.push_back(r.facets);
+    pieces.push_back(r.pieces);
+    tests.push_back(r.tests);
+    nodes.push_back(r.nodes);
+    candidates.push_back(r.candidates);
+    triangles.push_back(r.triangles);
+  }
+};
+
+double med(const std::vector<double>& v) { return mink_bench::quantile(v, 0.5); }
+
+/// The exit point along d: y = s d with s >= 0 the end of the first run of overlapping
+/// placements "A meets B + s d" (bisection on MeshOverlap), a point of ∂M. The origin if
+/// A and B do not overlap.
+V exitPoint(const Mesh& A, const Mesh& B, const Pose& poseB, const V& d) {
+  const Pose poseA;
+  mink::MeshOverlap<double> ov(A, poseA, B, poseB);
+  if (!ov.overlaps(V::Zero())) return V::Zero();
+  double lo = 0, hi = 1e-3 * (A.extent() + B.extent());
+  for (int i = 0; i < 80 && ov.overlaps(hi * d); ++i) lo = hi, hi *= 2;
+  for (int i = 0; i < 60; ++i) {
+    const double m = 0.5 * (lo + hi);
+    (ov.overlaps(m * d) ? lo : hi) = m;
+  }
+  return lo * d;
+}
+
+struct Row {
+  std::string scene, method;
+  bool degenerate;
+  int triA, triB, samples;
+  double scale, mradius, q1, median, q3, wall, paper;
+  double facets, pieces, tests, nodes, candidates, triangles;
+  std::string note;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string out = "benchmarks/results/cpd_table2.csv";
+  bool quick = false, verbose = false;
+  int frames = 30;
+  double cgalTimeout = 30, fullTimeout = 45, methodTimeout = 30;
+  std::string only;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0)
+      quick = true;
+    else if (std::strcmp(argv[i], "--verbose") == 0)
+      verbose = true;
+    else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+      only = argv[++i];
+    else if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc)
+      frames = std::atoi(argv[++i]);
+    else if (std::strcmp(argv[i], "--cgal-timeout") == 0 && i + 1 < argc)
+      cgalTimeout = std::atof(argv[++i]);
+    else if (std::strcmp(argv[i], "--full-timeout") == 0 && i + 1 < argc)
+      fullTimeout = std::atof(argv[++i]);
+    else if (std::strcmp(argv[i], "--method-timeout") == 0 && i + 1 < argc)
+      methodTimeout = std::atof(argv[++i]);
+    else
+      out = argv[i];
+  }
+  if (quick) {
+    frames = std::min(frames, 8);
+    fullTimeout = std::min(fullTimeout, 10.0);
+    cgalTimeout = std::min(cgalTimeout, 10.0);
+    methodTimeout = std::min(methodTimeout, 10.0);
+  }
+  const int fullSamples = quick ? 2 : 3;
+
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // line by line through tee
+  std::printf("mink_cpd_bench: the CPD paper's Table 2 (Lee et al., CAD 2016), ms per update, double\n");
+  std::printf("machine: %s; load average %s\n", mink_bench::machineLine().c_str(), mink_bench::loadAverage().c_str());
+  std::printf("M's enclosing sphere radius %.0f at frame 0, ball radius %.0f, %d frames per scene; thread CPU time%s\n",
+              kMRadius, kBall, frames, quick ? " (--quick: not for publication)" : "");
+  std::printf("time limits (wall, child processes): whole boundary %.0f s, CGAL %.0f s, each local method %.0f s\n\n",
+              fullTimeout, cgalTimeout, methodTimeout);
+
+  std::vector<Row> rows;
+  int disagreements = 0;
+  for (const Scene& sc : scenes(quick)) {
+    if (!only.empty() && sc.name != only) continue;
+    const V t0unit = placeB(sc);
+    const double m0 = mRadius(sc.a, sc.b, sc.R0, t0unit);
+    double k = kMRadius / m0;
+    const bool family = sc.degenerate || sc.name.find("turned") != std::string::npos;
+    if (family) k = std::round(k);  // integer: the coplanarity stays exact
+    const MeshShape as = scaled(sc.a, k), bs = scaled(sc.b, k);
+    const Mesh A = toMesh(as), B = toMesh(bs);
+    std::vector<Pose> poses;
+    for (int f = 0; f < frames; ++f) {
+      Pose p = sc.motion(f, sc.R0, t0unit);
+      p.translation *= k;
+      poses.push_back(p);
+    }
+    const Pose poseA;
+    const double mr = mRadius(as, bs, poses[0].rotation, poses[0].translation);
+
+    // The ball's centres (untimed): on each frame the exit point of the origin along the
+    // way B backs out (−approach), a point of ∂M at the contact; the origin when A and B
+    // only touch.
+    std::vector<V> centres;
+    std::vector<double> depth;
+    for (int f = 0; f < frames; ++f) {
+      centres.push_back(exitPoint(A, B, poses[f], -sc.approach));
+      depth.push_back(centres.back().norm());
+    }
+    mink::MeshOverlap<double> ov(A, poseA, B, poses[0]);
+    const bool overlap0 = ov.overlaps();
+    std::printf("== %s%s: %d / %d triangles, scale %.4g, M radius %.1f, %s at frame 0, ball centre depth %.2f .. %.2f\n",
+                sc.name.c_str(), sc.degenerate ? " [degenerate]" : "", A.numTriangles(), B.numTriangles(), k, mr,
+                overlap0 ? "overlapping" : "not overlapping", *std::min_element(depth.begin(), depth.end()),
+                *std::max_element(depth.begin(), depth.end()));
+
+    // The whole boundary at a few frames.
+    std::vector<int> fullFrames;
+    for (int i = 0; i < fullSamples; ++i) fullFrames.push_back(i * (frames - 1) / std::max(1, fullSamples - 1));
+    bool fullDone = false;
+    const std::vector<Record> fullRecs = inChild(
+        fullTimeout,
+        [&](const std::function<void(const Record&)>& emit) {
+          for (int f : fullFrames) {
+            const double c0 = cpuMs(), w0 = wallMs();
+            const Patch P = mink::minkowskiBoundary(A, poseA, B, poses[static_cast<std::size_t>(f)]);
+            emit(record(f, cpuMs() - c0, wallMs() - w0, P));
+          }
+        },
+        fullDone);
+    Stats full;
+    double fullArea0 = NAN;
+    for (const Record& r : fullRecs) {
+      full.add(r);
+      if (r.frame == 0) fullArea0 = r.area;
+    }
+
+    // The three local methods, each one object along the motion, each in its own child.
+    const mink::LocalSumMethod methods[3] = {mink::LocalSumMethod::BruteForce, mink::LocalSumMethod::SphereTree,
+                                             mink::LocalSumMethod::ConvexMaps};
+    const char* names[3] = {"brute", "sphere_tree", "convex_maps"};
+    Stats st[3], cmFirst;
+    std::array<double, 3> none{NAN, NAN, NAN};
+    std::vector<std::array<double, 3>> tri(frames, none), area(frames, none), fac(frames, none);
+    int ran[3] = {0, 0, 0};
+    bool methodDone[3] = {false, false, false};
+    for (int m = 0; m < 3; ++m) {
+      const std::vector<Record> recs = inChild(
+          methodTimeout,
+          [&](const std::function<void(const Record&)>& emit) {
+            mink::LocalMinkowskiSumOptions<double> o;
+            o.method = methods[m];
+            mink::LocalMinkowskiSum<double> local(A, B, o);
+            for (int f = 0; f < frames; ++f) {
+              const double c0 = cpuMs(), w0 = wallMs();
+              const Patch& P = local.update(poseA, poses[f], centres[f], kBall);
+              emit(record(f, cpuMs() - c0, wallMs() - w0, P));
+            }
+          },
+          methodDone[m]);
+      for (const Record& r : recs) {
+        const int f = static_cast<int>(r.frame);
+        if (verbose)
+          std::fprintf(stderr, "%s %s frame %d: %.1f ms, %.0f facets, %.0f pieces, %.0f tests, %.0f triangles\n",
+                       sc.name.c_str(), names[m], f, r.cpu, r.facets, r.pieces, r.tests, r.triangles);
+        (m == 2 && f == 0 ? cmFirst : st[m]).add(r);
+        tri[f][m] = r.triangles;
+        area[f][m] = r.area;
+        fac[f][m] = r.facets;
+        ++ran[m];
+      }
+    }
+    for (int f = 0; f < frames; ++f)
+      for (int m = 1; m < 3; ++m) {
+        if (std::isnan(tri[f][0]) || std::isnan(tri[f][m])) continue;
+        const double scale = std::max({area[f][0], area[f][m], kBall * kBall});
+        if (tri[f][m] != tri[f][0] || fac[f][m] != fac[f][0] || std::abs(area[f][m] - area[f][0]) > 1e-9 * scale) {
+          ++disagreements;
+          std::printf("WARNING %s frame %d: %s gives %.0f facets, %.0f triangles, area %.9g; brute %.0f, %.0f, %.9g\n",
+                      sc.name.c_str(), f, names[m], fac[f][m], tri[f][m], area[f][m], fac[f][0], tri[f][0], area[f][0]);
+        }
+      }
+
+    // CGAL's minkowski_sum_3 at frame 0.
+    double cgalMs = NAN, cgalArea = NAN;
+    std::string cgalNote;
+    if (sc.cgal && (!quick || family)) {
+      bool ok = false;
+      const std::vector<Record> recs = inChild(
+          cgalTimeout,
+          [&](const std::function<void(const Record&)>& emit) {
+            std::vector<Eigen::Vector3d> placed;
+            for (const V& v : bs.vertices) placed.push_back(poses[0].rotation * v + poses[0].translation);
+            const double c0 = cpuMs(), w0 = wallMs();
+            mink_test::MinkowskiReference ref(as, placed, bs.triangles);
+            emit({0, cpuMs() - c0, wallMs() - w0, NAN, NAN, NAN, NAN, NAN, double(ref.triangles().size()), ref.area()});
+          },
+          ok);
+      if (!recs.empty()) {
+        cgalMs = recs[0].cpu;
+        cgalArea = recs[0].area;
+        if (!std::isnan(fullArea0) && std::abs(cgalArea - fullArea0) > 1e-9 * cgalArea) {
+          ++disagreements;
+          std::printf("WARNING %s frame 0: mink's whole boundary has area %.12g, CGAL's %.12g\n", sc.name.c_str(),
+                      fullArea0, cgalArea);
+        }
+      } else {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "stopped after %.0f s", cgalTimeout);
+        cgalNote = buf;
+      }
+    } else {
+      cgalNote = quick ? "not run (--quick)"
+                       : "not run: non-convex meshes of 1K-4K triangles; CGAL takes 10-17 s already for a "
+                         "192-triangle torus with a box or an L-block (DESIGN.md)";
+    }
+
+    std::printf("   %-18s %10s %10s %10s %8s %9s %9s %8s %9s %10s %9s  %s\n", "method", "median ms", "q1", "q3",
+                "samples", "facets", "pieces", "tests", "triangles", "candidates", "nodes", "paper ms");
+    auto print = [&](const char* name, const Stats& s, double paper, const std::string& note) {
+      const double q1 = mink_bench::quantile(s.cpu, 0.25), q3 = mink_bench::quantile(s.cpu, 0.75);
+      char p[32] = "";
+      if (!std::isnan(paper)) std::snprintf(p, sizeof p, "%.2f", paper);
+      std::printf("   %-18s %10.3f %10.3f %10.3f %8zu %9.0f %9.0f %8.0f %9.0f %10.0f %9.0f  %s%s%s\n", name, med(s.cpu), q1,
+                  q3, s.cpu.size(), med(s.facets), med(s.pieces), med(s.tests), med(s.triangles), med(s.candidates),
+                  med(s.nodes), p, note.empty() ? "" : "  ", note.c_str());
+      rows.push_back({sc.name, name, sc.degenerate, A.numTriangles(), B.numTriangles(), static_cast<int>(s.cpu.size()), k,
+                      mr, q1, med(s.cpu), q3, med(s.wall), paper, med(s.facets), med(s.pieces), med(s.tests),
+                      med(s.nodes), med(s.candidates), med(s.triangles), note});
+    };
+    auto stopped = [](bool done, double t) {
+      char b[64] = "";
+      if (!done) std::snprintf(b, sizeof b, "stopped after %.0f s", t);
+      return std::string(b);
+    };
+    print("full", full, sc.paper[0], stopped(fullDone, fullTimeout));
+    if (!std::isnan(cgalMs)) {
+      std::printf("   %-18s %10.3f %10s %10s %8d  area %.12g, mink's whole boundary %.12g\n", "cgal", cgalMs, "", "", 1,
+                  cgalArea, fullArea0);
+      rows.push_back({sc.name, "cgal", sc.degenerate, A.numTriangles(), B.numTriangles(), 1, k, mr, cgalMs, cgalMs, cgalMs,
+                      cgalMs, NAN, NAN, NAN, NAN, NAN, NAN, NAN, ""});
+    } else {
+      std::printf("   %-18s %s\n", "cgal", cgalNote.c_str());
+      rows.push_back({sc.name, "cgal", sc.degenerate, A.numTriangles(), B.numTriangles(), 0, k, mr, NAN, NAN, NAN, NAN,
+                      NAN, NAN, NAN, NAN, NAN, NAN, NAN, cgalNote});
+    }
+    for (int m = 0; m < 3; ++m) print(names[m], st[m], sc.paper[m + 1], stopped(methodDone[m], methodTimeout));
+    print("convex_maps_first", cmFirst, NAN, "");
+    const double fullMs = full.cpu.empty() ? fullTimeout * 1e3 : med(full.cpu);
+    const char* ge = full.cpu.empty() ? ">" : "";
+    std::printf("   full / convex_maps = %s%.1fx (paper %.1fx); full / brute %s%.1fx; full / sphere_tree %s%.1fx\n\n", ge,
+                fullMs / med(st[2].cpu), sc.paper[0] / sc.paper[3], ge, fullMs / med(st[0].cpu), ge,
+                fullMs / med(st[1].cpu));
+  }
+
+  std::ofstream csv(out);
+  csv << "# mink_cpd_bench; machine: " << mink_bench::machineLine() << "; thread CPU ms per update\n";
+  csv << "scene,degenerate,triangles_a,triangles_b,scale,m_radius,ball_radius,method,samples,q1_ms,median_ms,q3_ms,"
+         "wall_median_ms,paper_ms,facets,pieces,overlap_tests,node_pairs,candidate_pairs,triangles,note\n";
+  for (const Row& r : rows)
+    csv << r.scene << ',' << (r.degenerate ? 1 : 0) << ',' << r.triA << ',' << r.triB << ',' << r.scale << ','
+        << r.mradius << ',' << kBall << ',' << r.method << ',' << r.samples << ',' << r.q1 << ',' << r.median << ','
+        << r.q3 << ',' << r.wall << ',' << r.paper << ',' << r.facets << ',' << r.pieces << ',' << r.tests << ','
+        << r.nodes << ',' << r.candidates << ',' << r.triangles << ",\"" << r.note << "\"\n";
+  std::printf("%d disagreement%s between methods; CSV: %s\n", disagreements, disagreements == 1 ? "" : "s", out.c_str());
+  return 0;
+}
