@@ -48,15 +48,17 @@
 //                       [--cgal-timeout S] [--method-timeout S] [--only SCENE] [--verbose]
 //   out.csv           default benchmarks/results/cpd_table2.csv (directory must exist)
 //   --frames          frames of each motion (default 30)
-//   --full-timeout    wall-time limit of the whole boundary's child, per scene (default 45)
+//   --full-timeout    wall-time limit of the whole boundary's child, per scene (default 40)
 //   --cgal-timeout    the same for CGAL (default 30)
-//   --method-timeout  the same for each local method (default 30)
+//   --method-timeout  the same for brute and for sphere_tree (default 30 each)
+//   --coherent-timeout  the same for convex_maps (default 50: it needs two frames or more)
 //   --only            run one scene (its name as printed, e.g. torus/torus)
 //   --verbose         every local update's time and sizes on stderr
 //   --quick           8 frames, 2 samples of the whole boundary, 10 s limits, CGAL only on
 //                     the degenerate family (smoke test, numbers not for publication)
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -339,10 +341,13 @@ Record record(int f, double cpu, double wall, const Patch& P) {
 
 /// Runs work(emit) in a child process stopped after timeoutS seconds of wall time; the
 /// records emitted before that. `finished` tells whether the child ran to its end.
+/// childCpuMs: the CPU time the child used in all (a lower bound on the unfinished call's
+/// time when no record came back).
 std::vector<Record> inChild(double timeoutS, const std::function<void(const std::function<void(const Record&)>&)>& work,
-                            bool& finished) {
+                            bool& finished, double* childCpuMs = nullptr) {
   std::vector<Record> out;
   finished = false;
+  rusage ru{};
   int fd[2];
   if (pipe(fd) != 0) return out;
   const pid_t pid = fork();
@@ -366,7 +371,7 @@ std::vector<Record> inChild(double timeoutS, const std::function<void(const std:
   };
   while (wallMs() - w0 < timeoutS * 1e3) {
     drain();
-    if (waitpid(pid, &status, WNOHANG) == pid) {
+    if (wait4(pid, &status, WNOHANG, &ru) == pid) {
       done = true;
       break;
     }
@@ -374,8 +379,10 @@ std::vector<Record> inChild(double timeoutS, const std::function<void(const std:
   }
   if (!done) {
     kill(pid, SIGKILL);
-    waitpid(pid, &status, 0);
+    wait4(pid, &status, 0, &ru);
   }
+  if (childCpuMs)
+    *childCpuMs = (ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) * 1e3 + (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) * 1e-3;
   drain();
   close(fd[0]);
   finished = done && WIFEXITED(status) && WEXITSTATUS(status) == 0;
@@ -429,7 +436,7 @@ int main(int argc, char** argv) {
   std::string out = "benchmarks/results/cpd_table2.csv";
   bool quick = false, verbose = false;
   int frames = 30;
-  double cgalTimeout = 30, fullTimeout = 45, methodTimeout = 30;
+  double cgalTimeout = 30, fullTimeout = 40, methodTimeout = 30, coherentTimeout = 50;
   std::string only;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0)
@@ -446,6 +453,8 @@ int main(int argc, char** argv) {
       fullTimeout = std::atof(argv[++i]);
     else if (std::strcmp(argv[i], "--method-timeout") == 0 && i + 1 < argc)
       methodTimeout = std::atof(argv[++i]);
+    else if (std::strcmp(argv[i], "--coherent-timeout") == 0 && i + 1 < argc)
+      coherentTimeout = std::atof(argv[++i]);
     else
       out = argv[i];
   }
@@ -454,6 +463,7 @@ int main(int argc, char** argv) {
     fullTimeout = std::min(fullTimeout, 10.0);
     cgalTimeout = std::min(cgalTimeout, 10.0);
     methodTimeout = std::min(methodTimeout, 10.0);
+    coherentTimeout = std::min(coherentTimeout, 10.0);
   }
   const int fullSamples = quick ? 2 : 3;
 
@@ -462,8 +472,9 @@ int main(int argc, char** argv) {
   std::printf("machine: %s; load average %s\n", mink_bench::machineLine().c_str(), mink_bench::loadAverage().c_str());
   std::printf("M's enclosing sphere radius %.0f at frame 0, ball radius %.0f, %d frames per scene; thread CPU time%s\n",
               kMRadius, kBall, frames, quick ? " (--quick: not for publication)" : "");
-  std::printf("time limits (wall, child processes): whole boundary %.0f s, CGAL %.0f s, each local method %.0f s\n\n",
-              fullTimeout, cgalTimeout, methodTimeout);
+  std::printf("time limits (wall, child processes, per scene): whole boundary %.0f s, CGAL %.0f s, brute and "
+              "sphere_tree %.0f s each, convex_maps %.0f s\n\n",
+              fullTimeout, cgalTimeout, methodTimeout, coherentTimeout);
 
   std::vector<Row> rows;
   int disagreements = 0;
@@ -505,6 +516,7 @@ int main(int argc, char** argv) {
     std::vector<int> fullFrames;
     for (int i = 0; i < fullSamples; ++i) fullFrames.push_back(i * (frames - 1) / std::max(1, fullSamples - 1));
     bool fullDone = false;
+    double fullChildCpu = 0;
     const std::vector<Record> fullRecs = inChild(
         fullTimeout,
         [&](const std::function<void(const Record&)>& emit) {
@@ -514,7 +526,7 @@ int main(int argc, char** argv) {
             emit(record(f, cpuMs() - c0, wallMs() - w0, P));
           }
         },
-        fullDone);
+        fullDone, &fullChildCpu);
     Stats full;
     double fullArea0 = NAN;
     for (const Record& r : fullRecs) {
@@ -532,8 +544,9 @@ int main(int argc, char** argv) {
     int ran[3] = {0, 0, 0};
     bool methodDone[3] = {false, false, false};
     for (int m = 0; m < 3; ++m) {
+      const double limit = m == 2 ? coherentTimeout : methodTimeout;
       const std::vector<Record> recs = inChild(
-          methodTimeout,
+          limit,
           [&](const std::function<void(const Record&)>& emit) {
             mink::LocalMinkowskiSumOptions<double> o;
             o.method = methods[m];
@@ -620,7 +633,13 @@ int main(int argc, char** argv) {
       if (!done) std::snprintf(b, sizeof b, "stopped after %.0f s", t);
       return std::string(b);
     };
-    print("full", full, sc.paper[0], stopped(fullDone, fullTimeout));
+    std::string fullNote = stopped(fullDone, fullTimeout);
+    if (full.cpu.empty()) {
+      char b[96];
+      std::snprintf(b, sizeof b, "stopped after %.0f s wall; > %.0f ms CPU", fullTimeout, fullChildCpu);
+      fullNote = b;
+    }
+    print("full", full, sc.paper[0], fullNote);
     if (!std::isnan(cgalMs)) {
       std::printf("   %-18s %10.3f %10s %10s %8d  area %.12g, mink's whole boundary %.12g\n", "cgal", cgalMs, "", "", 1,
                   cgalArea, fullArea0);
@@ -631,9 +650,10 @@ int main(int argc, char** argv) {
       rows.push_back({sc.name, "cgal", sc.degenerate, A.numTriangles(), B.numTriangles(), 0, k, mr, NAN, NAN, NAN, NAN,
                       NAN, NAN, NAN, NAN, NAN, NAN, NAN, cgalNote});
     }
-    for (int m = 0; m < 3; ++m) print(names[m], st[m], sc.paper[m + 1], stopped(methodDone[m], methodTimeout));
+    for (int m = 0; m < 3; ++m)
+      print(names[m], st[m], sc.paper[m + 1], stopped(methodDone[m], m == 2 ? coherentTimeout : methodTimeout));
     print("convex_maps_first", cmFirst, NAN, "");
-    const double fullMs = full.cpu.empty() ? fullTimeout * 1e3 : med(full.cpu);
+    const double fullMs = full.cpu.empty() ? fullChildCpu : med(full.cpu);
     const char* ge = full.cpu.empty() ? ">" : "";
     std::printf("   full / convex_maps = %s%.1fx (paper %.1fx); full / brute %s%.1fx; full / sphere_tree %s%.1fx\n\n", ge,
                 fullMs / med(st[2].cpu), sc.paper[0] / sc.paper[3], ge, fullMs / med(st[0].cpu), ge,

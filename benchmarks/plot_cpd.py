@@ -13,6 +13,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
 
 here = os.path.dirname(os.path.abspath(__file__))
 src = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "results", "cpd_table2.csv")
@@ -44,6 +46,8 @@ by = {(r["scene"], r["method"]): r for r in rows}
 
 fig, ax = plt.subplots(figsize=(max(8, 1.6 * len(scenes)), 5))
 width = 0.8 / len(methods)
+handles = []
+top = 1.0
 for m, (key, label) in enumerate(methods):
     xs, ys, lower, paper_x, paper_y = [], [], [], [], []
     for s, scene in enumerate(scenes):
@@ -56,26 +60,37 @@ for m, (key, label) in enumerate(methods):
             xs.append(x)
             ys.append(v)
         elif r["note"].startswith("stopped after"):
-            # A lower bound: the child process was stopped.
-            lower.append((x, 1e3 * float(r["note"].split()[2])))
+            # A lower bound: the child process was stopped ("... > N ms CPU" when known).
+            note = r["note"]
+            if "ms CPU" in note:
+                lower.append((x, float(note.split(">")[1].split()[0])))
+            else:
+                lower.append((x, 1e3 * float(note.split()[2])))
         p = num(r["paper_ms"])
         if not math.isnan(p):
             paper_x.append(x)
             paper_y.append(p)
-    ax.bar(xs, ys, width, color=colours[m], label=label)
+            top = max(top, p)
+    handles.append(Patch(facecolor=colours[m], label=label))
+    if xs:
+        ax.bar(xs, ys, width, color=colours[m])
+        top = max(top, max(ys))
     for x, v in lower:
         ax.bar([x], [v], width, color="none", edgecolor=colours[m], hatch="//")
         ax.annotate("> %.0f s" % (v / 1e3), (x, v), ha="center", va="bottom", fontsize=7, rotation=90)
+        top = max(top, v)
     if paper_x:
         ax.scatter(paper_x, paper_y, marker="_", s=120, color="black", zorder=3)
-ax.scatter([], [], marker="_", s=120, color="black", label="paper, Table 2 (i7 3.6 GHz)")
-ax.bar([], [], color="none", edgecolor="black", hatch="//", label="stopped: lower bound")
+handles.append(Line2D([], [], marker="_", markersize=12, linestyle="none", color="black",
+                      label="paper, Table 2 (i7 3.6 GHz)"))
+handles.append(Patch(facecolor="none", edgecolor="black", hatch="//", label="stopped: lower bound (CPU)"))
 ax.set_yscale("log")
+ax.set_ylim(top=top * 30)
 ax.set_xticks(range(len(scenes)))
 ax.set_xticklabels(scenes, rotation=20, ha="right")
 ax.set_ylabel("ms per update (median, thread CPU time)")
 ax.set_title("Boundary of M = A ⊕ −B: whole, and local in a ball of radius 50 (M radius 250)")
-ax.legend(fontsize=8, loc="upper left", ncol=2)
+ax.legend(handles=handles, fontsize=8, loc="upper left", ncol=3)
 ax.grid(axis="y", which="both", alpha=0.3)
 fig.tight_layout()
 fig.savefig(dst, dpi=120)
