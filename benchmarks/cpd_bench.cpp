@@ -47,11 +47,11 @@
 // Usage: mink_cpd_bench [out.csv] [--quick] [--frames N] [--full-timeout S]
 //                       [--cgal-timeout S] [--method-timeout S] [--only SCENE] [--verbose]
 //   out.csv           default benchmarks/results/cpd_table2.csv (directory must exist)
-//   --frames          frames of each motion (default 30)
-//   --full-timeout    wall-time limit of the whole boundary's child, per scene (default 40)
+//   --frames          frames of each motion (default 20)
+//   --full-timeout    wall-time limit of the whole boundary's child, per scene (default 30)
 //   --cgal-timeout    the same for CGAL (default 30)
-//   --method-timeout  the same for brute and for sphere_tree (default 30 each)
-//   --coherent-timeout  the same for convex_maps (default 50: it needs two frames or more)
+//   --method-timeout  the same for brute and for sphere_tree (default 20 each)
+//   --coherent-timeout  the same for convex_maps (default 40: it needs two frames or more)
 //   --only            run one scene (its name as printed, e.g. torus/torus)
 //   --verbose         every local update's time and sizes on stderr
 //   --quick           8 frames, 2 samples of the whole boundary, 10 s limits, CGAL only on
@@ -435,8 +435,8 @@ struct Row {
 int main(int argc, char** argv) {
   std::string out = "benchmarks/results/cpd_table2.csv";
   bool quick = false, verbose = false;
-  int frames = 30;
-  double cgalTimeout = 30, fullTimeout = 40, methodTimeout = 30, coherentTimeout = 50;
+  int frames = 20;
+  double cgalTimeout = 30, fullTimeout = 30, methodTimeout = 20, coherentTimeout = 40;
   std::string only;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0)
@@ -480,6 +480,7 @@ int main(int argc, char** argv) {
   int disagreements = 0;
   for (const Scene& sc : scenes(quick)) {
     if (!only.empty() && sc.name != only) continue;
+    const double sceneStart = wallMs();
     const V t0unit = placeB(sc);
     const double m0 = mRadius(sc.a, sc.b, sc.R0, t0unit);
     double k = kMRadius / m0;
@@ -543,6 +544,7 @@ int main(int argc, char** argv) {
     std::vector<std::array<double, 3>> tri(frames, none), area(frames, none), fac(frames, none);
     int ran[3] = {0, 0, 0};
     bool methodDone[3] = {false, false, false};
+    double methodChildCpu[3] = {0, 0, 0};
     for (int m = 0; m < 3; ++m) {
       const double limit = m == 2 ? coherentTimeout : methodTimeout;
       const std::vector<Record> recs = inChild(
@@ -557,7 +559,7 @@ int main(int argc, char** argv) {
               emit(record(f, cpuMs() - c0, wallMs() - w0, P));
             }
           },
-          methodDone[m]);
+          methodDone[m], &methodChildCpu[m]);
       for (const Record& r : recs) {
         const int f = static_cast<int>(r.frame);
         if (verbose)
@@ -628,18 +630,16 @@ int main(int argc, char** argv) {
                       mr, q1, med(s.cpu), q3, med(s.wall), paper, med(s.facets), med(s.pieces), med(s.tests),
                       med(s.nodes), med(s.candidates), med(s.triangles), note});
     };
-    auto stopped = [](bool done, double t) {
-      char b[64] = "";
-      if (!done) std::snprintf(b, sizeof b, "stopped after %.0f s", t);
+    // A stopped column: with no sample, the child's CPU time bounds its first call's.
+    auto stopped = [](bool done, double t, bool none, double childCpu) {
+      char b[96] = "";
+      if (!done && none)
+        std::snprintf(b, sizeof b, "stopped after %.0f s wall; > %.0f ms CPU", t, childCpu);
+      else if (!done)
+        std::snprintf(b, sizeof b, "stopped after %.0f s", t);
       return std::string(b);
     };
-    std::string fullNote = stopped(fullDone, fullTimeout);
-    if (full.cpu.empty()) {
-      char b[96];
-      std::snprintf(b, sizeof b, "stopped after %.0f s wall; > %.0f ms CPU", fullTimeout, fullChildCpu);
-      fullNote = b;
-    }
-    print("full", full, sc.paper[0], fullNote);
+    print("full", full, sc.paper[0], stopped(fullDone, fullTimeout, full.cpu.empty(), fullChildCpu));
     if (!std::isnan(cgalMs)) {
       std::printf("   %-18s %10.3f %10s %10s %8d  area %.12g, mink's whole boundary %.12g\n", "cgal", cgalMs, "", "", 1,
                   cgalArea, fullArea0);
@@ -651,13 +651,15 @@ int main(int argc, char** argv) {
                       NAN, NAN, NAN, NAN, NAN, NAN, NAN, cgalNote});
     }
     for (int m = 0; m < 3; ++m)
-      print(names[m], st[m], sc.paper[m + 1], stopped(methodDone[m], m == 2 ? coherentTimeout : methodTimeout));
+      print(names[m], st[m], sc.paper[m + 1],
+            stopped(methodDone[m], m == 2 ? coherentTimeout : methodTimeout, ran[m] == 0, methodChildCpu[m]));
     print("convex_maps_first", cmFirst, NAN, "");
     const double fullMs = full.cpu.empty() ? fullChildCpu : med(full.cpu);
     const char* ge = full.cpu.empty() ? ">" : "";
-    std::printf("   full / convex_maps = %s%.1fx (paper %.1fx); full / brute %s%.1fx; full / sphere_tree %s%.1fx\n\n", ge,
+    std::printf("   full / convex_maps = %s%.1fx (paper %.1fx); full / brute %s%.1fx; full / sphere_tree %s%.1fx\n", ge,
                 fullMs / med(st[2].cpu), sc.paper[0] / sc.paper[3], ge, fullMs / med(st[0].cpu), ge,
                 fullMs / med(st[1].cpu));
+    std::printf("   (scene took %.0f s of wall time)\n\n", (wallMs() - sceneStart) * 1e-3);
   }
 
   std::ofstream csv(out);

@@ -7,8 +7,8 @@
 #            $MINK_BENCH_QUICK_DIR (default ${TMPDIR:-/tmp}/mink-cpd-quick) so the committed
 #            results are not overwritten.
 # The full run takes about 10 minutes: every column runs in a child process stopped after a
-# wall-time limit (--full-timeout 40, --cgal-timeout 30, --method-timeout 30,
-# --coherent-timeout 50 seconds per scene), because single updates on the paper-size scenes
+# wall-time limit (--full-timeout 30, --cgal-timeout 30, --method-timeout 20,
+# --coherent-timeout 40 seconds per scene), because single updates on the paper-size scenes
 # take seconds and the whole boundary minutes.
 # environment: MINK_BENCH_BUILD_DIR (default ${TMPDIR:-/tmp}/mink-bench-build),
 #              PYTHON (an interpreter with matplotlib; default: the first of python3,
