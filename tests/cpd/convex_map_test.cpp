@@ -4,13 +4,15 @@
 // cone (d · (w − v) <= 0 for all neighbours w, decided exactly in CGAL::Gmpq) is listed in
 // the cell of d, and every convex edge whose short Gauss arc crosses a query arc (exact arc
 // test in Gmpq) is listed in a cell the arc meets. Random directions and arcs (fixed seed),
-// including the face normals themselves (cell corners: the boundary cases).
+// including the face normals themselves (cell corners: the boundary cases). Two shapes
+// far from unit scale (2^-1000, 2^280).
 #include "mink/cpd/convex_map.hpp"
 
 #include <gtest/gtest.h>
 
 #include <CGAL/Gmpq.h>
 
+#include <cmath>
 #include <random>
 #include <set>
 #include <string>
@@ -28,6 +30,13 @@ using Mesh = mink::TriangleMesh<double>;
 
 Vq exact(const V& v) { return Vq(Q(v.x()), Q(v.y()), Q(v.z())); }
 
+/// Triangle t's normal in Gmpq (triangleNormal() underflows for a mesh at 2^-1000).
+Vq exactNormal(const Mesh& X, int t) {
+  const auto& tri = X.triangle(t);
+  const Vq a = exact(X.vertex(tri[0]));
+  return (exact(X.vertex(tri[1])) - a).cross(exact(X.vertex(tri[2])) - a);
+}
+
 bool inLocalMaximumCone(const Mesh& X, int v, const V& d) {
   const Vq dq = exact(d), pv = exact(X.vertex(v));
   for (int w : X.vertexNeighbors(v))
@@ -35,9 +44,18 @@ bool inLocalMaximumCone(const Mesh& X, int v, const V& d) {
   return true;
 }
 
+mink_test::MeshShape scaled(mink_test::MeshShape s, int k) {
+  for (auto& v : s.vertices) v *= std::ldexp(1.0, k);
+  s.name += " at 2^" + std::to_string(k);
+  return s;
+}
+
+/// Shapes at unit scale, and two far from it (the squares of their normals and edge
+/// vectors over- or underflow double: the map must not lose them).
 std::vector<mink_test::MeshShape> shapes() {
   return {mink_test::lBlock(), mink_test::uBlock(), mink_test::torus(16, 12), mink_test::cubeWithHole(),
-          mink_test::starPrism(), mink_test::cup(), mink_test::spoon(), mink_test::axes()};
+          mink_test::starPrism(), mink_test::cup(), mink_test::spoon(), mink_test::axes(),
+          scaled(mink_test::lBlock(), -1000), scaled(mink_test::torus(16, 12), 280)};
 }
 
 TEST(ConvexMap, LocatedCellHoldsTheDirection) {
@@ -68,7 +86,7 @@ TEST(ConvexMap, VertexSetsAreComplete) {
     const Mesh X = Mesh::fromMesh(s.verticesAs<double>(), s.triangles);
     const mink::ConvexMap<double> map(X);
     std::vector<V> dirs;
-    for (int t = 0; t < X.numTriangles(); ++t) dirs.push_back(mink::ConvexMap<double>::unit(X.triangleNormal(t)));
+    for (int t = 0; t < X.numTriangles(); ++t) dirs.push_back(mink::ConvexMap<double>::faceUnit(X, t));
     for (int k = 0; k < 300; ++k) dirs.push_back(V(N(rng), N(rng), N(rng)).normalized());
     int checked = 0;
     for (const V& d : dirs) {
@@ -105,8 +123,7 @@ TEST(ConvexMap, EdgeSetsAreComplete) {
       for (int e = 0; e < X.numEdges(); ++e) {
         if (X.edgeKind(e) != mink::EdgeKind::Convex) continue;
         const auto tt = X.edgeTriangles(e);
-        const auto c = mink::classifyArcs(exact(p), exact(q), mink::Vec3<Q>(X.triangleNormal(tt.first).cast<Q>()),
-                                          mink::Vec3<Q>(X.triangleNormal(tt.second).cast<Q>()));
+        const auto c = mink::classifyArcs(exact(p), exact(q), exactNormal(X, tt.first), exactNormal(X, tt.second));
         if (c == mink::ArcIntersection::None) continue;
         ++crossings;
         EXPECT_TRUE(listed.count(e)) << "edge " << e << " missing";

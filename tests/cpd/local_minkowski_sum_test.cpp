@@ -184,6 +184,90 @@ TEST(LocalMinkowskiSum, CoherentUpdatesEqualUpdatesFromScratch) {
   }
 }
 
+TEST(LocalMinkowskiSum, ScalingByAPowerOfTwoScalesThePatch) {
+  // Multiplying every coordinate, the centre and the radius by 2^k is exact in floating
+  // point, so every method must return the patch of scale one times 2^k, triangle for
+  // triangle: at 2^64 and 2^-66 (on either side of where LocalMinkowskiSum starts working
+  // on copies scaled to unit size), at 2^270 (|normal|^2 and the trimming's products of
+  // up to nine coordinates overflow), 2^-300 (they underflow) and 2^-520 (the normals
+  // themselves are denormal). All within fromMesh's coordinate range.
+  const MeshShape a = mink_test::torus(16, 12), b = mink_test::boxShape(V(-0.4, -0.3, -0.5), V(0.4, 0.3, 0.5));
+  const M3 R = rotation(1.1, V(0.3, -1, 2));
+  const V t(0.9, 0.3, -0.2), c(1.9, 0.2, 0.1);
+  const double r = 0.8;
+  for (auto method : {mink::LocalSumMethod::BruteForce, mink::LocalSumMethod::SphereTree, mink::LocalSumMethod::ConvexMaps}) {
+    mink::LocalMinkowskiSumOptions<double> opt;
+    opt.method = method;
+    const Mesh A1 = mesh(a), B1 = mesh(b);
+    mink::LocalMinkowskiSum<double> one(A1, B1, opt);
+    mink::Pose<double> pA, pB;
+    pB.rotation = R;
+    pB.translation = t;
+    const auto ref = triangleSet(one.update(pA, pB, c, r));
+    ASSERT_FALSE(ref.empty());
+    for (int k : {64, -66, 270, -300, -520}) {
+      SCOPED_TRACE("method " + std::to_string(static_cast<int>(method)) + ", scale 2^" + std::to_string(k));
+      const double f = std::ldexp(1.0, k);
+      const Mesh A = mesh(scaledShape(a, f)), B = mesh(scaledShape(b, f));
+      mink::LocalMinkowskiSum<double> local(A, B, opt);
+      mink::Pose<double> qB = pB;
+      qB.translation = t * f;
+      std::set<std::vector<double>> back;
+      for (auto key : triangleSet(local.update(pA, qB, V(c * f), r * f))) {
+        for (double& x : key) x = std::ldexp(x, -k);
+        back.insert(key);
+      }
+      EXPECT_EQ(back, ref);
+    }
+  }
+}
+
+TEST(LocalMinkowskiSum, NearlyFlatEdgeTurnedReflexByTheRotation) {
+  // fuzz/regressions_mesh/convex_maps_misses_ee_pair_torus3x3_torus4x3: B's edge 10-5, the
+  // diagonal of a planar quad, is convex by 1e-16 in B's frame and reflex once B's corners
+  // are rotated and rounded. BruteForce took it into an EE pair (both far vertices beyond
+  // the plane through the two edges), ConvexMaps (B's own Gauss arcs) did not.
+  const std::vector<V> va = {
+      V(0x1p+2, 0, 0), V(0x1.4p+1, 0, 0x1.bb67ae8584cabp-1), V(0x1.3ffffffffffffp+1, 0, -0x1.bb67ae8584ca8p-1),
+      V(-0x1.ffffffffffffcp+0, 0x1.bb67ae8584cabp+1, 0), V(-0x1.3fffffffffffep+0, 0x1.1520cd1372febp+1, 0x1.bb67ae8584cabp-1),
+      V(-0x1.3fffffffffffdp+0, 0x1.1520cd1372feap+1, -0x1.bb67ae8584ca8p-1), V(-0x1.0000000000004p+1, -0x1.bb67ae8584ca8p+1, 0),
+      V(-0x1.4000000000005p+0, -0x1.1520cd1372fe9p+1, 0x1.bb67ae8584cabp-1),
+      V(-0x1.4000000000004p+0, -0x1.1520cd1372fe8p+1, -0x1.bb67ae8584ca8p-1)};
+  const std::vector<std::array<int, 3>> ta = {{0, 3, 4}, {0, 4, 1}, {1, 4, 5}, {1, 5, 2}, {2, 5, 3}, {2, 3, 0},
+                                              {3, 6, 7}, {3, 7, 4}, {4, 7, 8}, {4, 8, 5}, {5, 8, 6}, {5, 6, 3},
+                                              {6, 0, 1}, {6, 1, 7}, {7, 1, 2}, {7, 2, 8}, {8, 2, 0}, {8, 0, 6}};
+  const std::vector<V> vb = {
+      V(0x1p+1, 0, 0), V(0x1.8p+0, 0, 0x1p-1), V(0x1p+0, 0, 0x1.1a62633145c07p-54), V(0x1.8p+0, 0, -0x1p-1),
+      V(-0x1.ffffffffffffcp-1, 0x1.bb67ae8584cabp+0, 0), V(-0x1.7fffffffffffdp-1, 0x1.4c8dc2e42398p+0, 0x1p-1),
+      V(-0x1.ffffffffffffcp-2, 0x1.bb67ae8584cabp-1, 0x1.1a62633145c07p-54),
+      V(-0x1.7fffffffffffdp-1, 0x1.4c8dc2e42398p+0, -0x1p-1), V(-0x1.0000000000004p+0, -0x1.bb67ae8584ca8p+0, 0),
+      V(-0x1.8000000000006p-1, -0x1.4c8dc2e42397ep+0, 0x1p-1),
+      V(-0x1.0000000000004p-1, -0x1.bb67ae8584ca8p-1, 0x1.1a62633145c07p-54),
+      V(-0x1.8000000000006p-1, -0x1.4c8dc2e42397ep+0, -0x1p-1)};
+  const std::vector<std::array<int, 3>> tb = {
+      {0, 4, 5}, {0, 5, 1}, {1, 5, 6}, {1, 6, 2},  {2, 6, 7},  {2, 7, 3},  {3, 7, 4},   {3, 4, 0},
+      {4, 8, 9}, {4, 9, 5}, {5, 9, 10}, {5, 10, 6}, {6, 10, 11}, {6, 11, 7}, {7, 11, 8}, {7, 8, 4},
+      {8, 0, 1}, {8, 1, 9}, {9, 1, 2}, {9, 2, 10}, {10, 2, 3}, {10, 3, 11}, {11, 3, 0}, {11, 0, 8}};
+  const Mesh A = Mesh::fromMesh(va, ta), B = Mesh::fromMesh(vb, tb);
+  mink::Pose<double> pA, pB;
+  pB.rotation << 0.96296296296296302, -0.25925925925925924, 0.07407407407407407, 0.25925925925925924,
+      0.81481481481481488, -0.51851851851851849, 0.07407407407407407, 0.51851851851851849, 0.85185185185185186;
+  std::set<std::tuple<int, int, int>> sets[3];
+  std::set<std::vector<double>> tris[3];
+  for (int m = 0; m < 3; ++m) {
+    mink::LocalMinkowskiSumOptions<double> opt;
+    opt.method = static_cast<mink::LocalSumMethod>(m);
+    mink::LocalMinkowskiSum<double> local(A, B, opt);
+    tris[m] = triangleSet(local.update(pA, pB, V(-1, -0.5, 0.5), 1.0));
+    sets[m] = facetSet(local.facets());
+  }
+  EXPECT_FALSE(sets[0].empty());
+  EXPECT_EQ(sets[1], sets[0]) << "sphere tree";
+  EXPECT_EQ(sets[2], sets[0]) << "convex maps";
+  EXPECT_EQ(tris[2], tris[0]);
+  EXPECT_EQ(sets[0].count({static_cast<int>(mink::ConvolutionType::EE), 15, 21}), 0u);  // the pair of the flipped edge
+}
+
 TEST(LocalMinkowskiSum, BadInputIsRejected) {
   const Mesh A = mesh(mink_test::lBlock()), B = mesh(mink_test::boxShape());
   mink::LocalMinkowskiSum<double> local(A, B);

@@ -35,6 +35,7 @@
 
 #include <Eigen/Core>
 
+#include "mink/core/orientation.hpp"
 #include "mink/core/scalar_traits.hpp"
 #include "mink/mesh/triangle_mesh.hpp"
 #include "mink/polyhedron/convex_polyhedron.hpp"
@@ -51,11 +52,11 @@ class ConvexMap {
   explicit ConvexMap(const TriangleMesh<T>& X) {
     std::vector<V3> pts;
     pts.reserve(static_cast<std::size_t>(X.numTriangles() + X.numEdges() / 4 + 8));
-    for (int t = 0; t < X.numTriangles(); ++t) pts.push_back(unit(X.triangleNormal(t)));
+    for (int t = 0; t < X.numTriangles(); ++t) pts.push_back(faceUnit(X, t));
     for (int e = 0; e < X.numEdges(); ++e) {
       if (X.edgeKind(e) != EdgeKind::Reflex) continue;
       const auto tt = X.edgeTriangles(e);
-      const V3 m = -(unit(X.triangleNormal(tt.first)) + unit(X.triangleNormal(tt.second)));
+      const V3 m = -(faceUnit(X, tt.first) + faceUnit(X, tt.second));
       if (m.norm() > 0) pts.push_back(m.normalized());  // the long arc's midpoint
     }
     // Normals equal to rounding (the two triangles of a flat quad) would make cells of
@@ -175,10 +176,32 @@ class ConvexMap {
     }
   }
 
-  static V3 unit(const Vec3<T>& n) {
-    const V3 d(detail::toDouble(n[0]), detail::toDouble(n[1]), detail::toDouble(n[2]));
-    const double l = d.norm();
-    return l > 0 ? V3(d / l) : d;
+  /// The unit outward normal of triangle t of X, in double, for meshes of any size
+  /// fromMesh accepts: the normal is brought to a largest coordinate near one before its
+  /// norm is taken (its square would overflow beyond about 2^511 and underflow below
+  /// 2^-511), and a normal in the denormal range, where its direction is lost, is computed
+  /// again from the corners with accurateCross's exponent.
+  static V3 faceUnit(const TriangleMesh<T>& X, int t) {
+    V3 d = toD(X.triangleNormal(t));
+    if constexpr (!ScalarTraits<T>::isExact) {
+      if (d.cwiseAbs().maxCoeff() < std::ldexp(1.0, -900)) {
+        const auto tri = X.triangle(t);
+        int e = 0;
+        d = toD(accurateCross(X.vertex(tri[0]), X.vertex(tri[1]), X.vertex(tri[2]), &e));
+      }
+    }
+    return unitOf(d);
+  }
+
+  /// d / |d|, its largest coordinate first brought near one by a power of two (so that
+  /// |d|² neither over- nor underflows); zero for a zero or non-finite d.
+  static V3 unitOf(V3 d) {
+    const double m = d.cwiseAbs().maxCoeff();
+    if (!(m > 0) || !std::isfinite(m)) return V3::Zero();
+    int e = 0;
+    std::frexp(m, &e);
+    for (int k = 0; k < 3; ++k) d[k] = std::ldexp(d[k], -e);
+    return d / d.norm();
   }
 
  private:
@@ -246,9 +269,8 @@ class ConvexMap {
     dirs_.clear();
     const V3 pv = toD(X.vertex(v));
     for (int w : X.vertexNeighbors(v)) {
-      const V3 e = toD(X.vertex(w)) - pv;
-      const double l = e.norm();
-      if (l > 0) dirs_.push_back(e / l);
+      const V3 e = unitOf(toD(X.vertex(w)) - pv);
+      if (e != V3::Zero()) dirs_.push_back(e);
     }
     // The cone's extreme rays are among the cross products of two constraint normals.
     rays_.clear();
@@ -287,7 +309,7 @@ class ConvexMap {
   /// Registers convex edge e in every cell its short arc meets.
   void registerEdge(const TriangleMesh<T>& X, int e, Walk& walk, std::vector<std::vector<int>>& sets) {
     const auto tt = X.edgeTriangles(e);
-    const V3 p = unit(X.triangleNormal(tt.first)), q = unit(X.triangleNormal(tt.second));
+    const V3 p = faceUnit(X, tt.first), q = faceUnit(X, tt.second);
     int hint = -1;
     forCellsOnArc(p, q, hint, walk, [&](int f) { sets[static_cast<std::size_t>(f)].push_back(e); });
   }

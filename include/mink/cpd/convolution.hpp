@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "mink/core/difference_orientation.hpp"
+#include "mink/core/orientation.hpp"
 #include "mink/mesh/triangle_mesh.hpp"
 
 namespace mink {
@@ -117,8 +118,9 @@ class ConvolutionFrame {
     return true;
   }
 
-  /// EE: 0 if edges e (of A) and e' (of B) are not compatible (either not convex, the
-  /// edges parallel, or the faces not on the two sides of a plane through both), else the
+  /// EE: 0 if edges e (of A) and e' (of B) are not compatible (either not convex — B's
+  /// also as placed —, the edges parallel, or the faces not on the two sides of a plane
+  /// through both), else the
   /// orientation (+1 / −1) of the facet's outward normal relative to d_A × d_B.
   int compatibleEE(int e, int ep) const {
     if (A_.edgeKind(e) != EdgeKind::Convex || B_.edgeKind(ep) != EdgeKind::Convex) return 0;
@@ -139,6 +141,11 @@ class ConvolutionFrame {
     const int b1 = orientDiff(p, q, u, v, u, s1), b2 = orientDiff(p, q, u, v, u, s2);
     // B's far vertices must be on the other side (or on the plane).
     if (b1 == sideA || b2 == sideA) return 0;
+    // B is placed by a rounded rotation: a nearly flat convex edge of B (a planar quad's
+    // diagonal) can come out flat or reflex, and then both far vertices lie beyond a plane
+    // through it without B being supported there. The edge must be convex as placed too
+    // (the test of TriangleMesh's classification, on the placed corners).
+    if (orient3d(u, v, s1, s2) >= 0) return 0;
     return -sideA;  // ε: ε · sideA < 0
   }
 

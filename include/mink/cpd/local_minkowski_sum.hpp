@@ -20,6 +20,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <cmath>
 #include <string>
@@ -57,14 +58,83 @@ void checkPoseForCpd(const Pose<T>& pose, const char* name) {
   checkRigidPlacement(pose.rotation, pose.translation, "LocalMinkowskiSum", name);
 }
 
+/// The unit LocalMinkowskiSum works in. The trimming's constructions and filters multiply
+/// up to nine coordinates of M, which over- or underflow far from unit scale. When the
+/// scene (the meshes' coordinates, B's offset from A, the ball) is beyond 2^±W, W =
+/// max_exponent / 16 (64 for double), the work is done on copies of the meshes scaled by
+/// 2^-e, e a multiple of W/2 near the scene's exponent: exact (a power of two), never so
+/// far down that a mesh coordinate would lose a bit, and scaled back in the answer.
+/// Always 0 for exact T.
+template <class T>
+class CpdScale {
+ public:
+  CpdScale(const TriangleMesh<T>& A, const TriangleMesh<T>& B) {
+    if constexpr (!ScalarTraits<T>::isExact) {
+      T small = std::numeric_limits<T>::infinity();
+      for (const TriangleMesh<T>* X : {&A, &B})
+        for (int v = 0; v < X->numVertices(); ++v)
+          for (int k = 0; k < 3; ++k) {
+            const T x = std::abs(X->vertex(v)[k]);
+            meshMax_ = std::max(meshMax_, x);
+            if (x > T(0)) small = std::min(small, x);
+          }
+      if (std::isfinite(small)) std::frexp(small, &meshMinExp_);
+    }
+  }
+
+  /// The exponent e for a scene whose offsets and ball reach `other` (0: unscaled).
+  int exponentFor(const T& other) const {
+    if constexpr (ScalarTraits<T>::isExact) {
+      (void)other;
+      return 0;
+    } else {
+      const T m = std::max(meshMax_, other);
+      if (!(m > T(0)) || !std::isfinite(m)) return 0;
+      int es = 0;
+      std::frexp(m, &es);
+      const int W = std::numeric_limits<T>::max_exponent / 16;
+      if (es >= -W && es <= W) return 0;
+      int e = (es / (W / 2)) * (W / 2);  // towards zero: the scaled scene within 2^±W/2
+      // Scaling down: the smallest mesh coordinate must stay a normal number.
+      if (e > 0) e = std::max(0, std::min(e, meshMinExp_ - std::numeric_limits<T>::min_exponent));
+      return e;
+    }
+  }
+
+ private:
+  T meshMax_ = T(0);
+  int meshMinExp_ = 0;
+};
+
+/// X with every coordinate multiplied by 2^-e (the same ids for vertices, triangles, edges).
+template <class T>
+TriangleMesh<T> scaledMesh(const TriangleMesh<T>& X, int e) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    return X;
+  } else {
+    if (e == 0) return X;
+    std::vector<Vec3<T>> v(static_cast<std::size_t>(X.numVertices()));
+    for (int i = 0; i < X.numVertices(); ++i)
+      for (int k = 0; k < 3; ++k) v[static_cast<std::size_t>(i)][k] = std::ldexp(X.vertex(i)[k], -e);
+    return TriangleMesh<T>::fromMesh(v, X.triangles());
+  }
+}
+
 }  // namespace detail
 
 template <class T>
 class LocalMinkowskiSum {
  public:
-  /// One object per pair of meshes; both must outlive it.
+  /// One object per pair of meshes (it keeps copies, which share the meshes' bodies).
   LocalMinkowskiSum(const TriangleMesh<T>& A, const TriangleMesh<T>& B, const LocalMinkowskiSumOptions<T>& options = {})
-      : A_(A), B_(B), options_(options), frame_(A, B), overlap_(A, B, Mat3<T>::Identity(), Vec3<T>::Zero()) {}
+      : userA_(A),
+        userB_(B),
+        scale_(A, B),
+        A_(A),
+        B_(B),
+        options_(options),
+        frame_(A_, B_),
+        overlap_(A_, B_, Mat3<T>::Identity(), Vec3<T>::Zero()) {}
 
   /// The patch of ∂M inside the ball (centre, radius), world frame. Throws InvalidInput for
   /// a non-finite centre, a radius <= 0 or not finite, or a pose that is not rigid.
@@ -80,16 +150,34 @@ class LocalMinkowskiSum {
     // cancel in a − b up to tB − tA).
     const Mat3<T> RAt = poseA.rotation.transpose();
     const Mat3<T> R = RAt * poseB.rotation;
-    const Vec3<T> t = RAt * (poseB.translation - poseA.translation);
-    frame_.place(R, t);
-    overlap_.setPlacement(R, t);
+    Vec3<T> t = RAt * (poseB.translation - poseA.translation);
     region_.ball = true;
     region_.centre = RAt * centre;
     region_.radius = radius;
+    if constexpr (!ScalarTraits<T>::isExact) {
+      const T reach = std::max({t.cwiseAbs().maxCoeff(), region_.centre.cwiseAbs().maxCoeff(), radius});
+      const int e = scale_.exponentFor(reach);
+      if (e != scaleExp_) rescale(e);
+    }
+    if (scaleExp_ != 0) {
+      for (int a = 0; a < 3; ++a) {
+        t[a] = scaled(t[a]);
+        region_.centre[a] = scaled(region_.centre[a]);
+      }
+      // A radius below the smallest normal number in those units is taken as that number.
+      region_.radius = std::max(scaled(radius), std::numeric_limits<T>::min());
+      bool finite = ScalarTraits<T>::isFinite(region_.radius);
+      for (int a = 0; a < 3; ++a) finite = finite && ScalarTraits<T>::isFinite(region_.centre[a]);
+      if (!finite)
+        throw InvalidInput("LocalMinkowskiSum::update: the ball's centre or radius overflows in units of the "
+                           "meshes' size (2^" + std::to_string(scaleExp_) + ")");
+    }
+    frame_.place(R, t);
+    overlap_.setPlacement(R, t);
     region_.bounded = true;
     for (int a = 0; a < 3; ++a) {
-      region_.lo[a] = region_.centre[a] - radius;
-      region_.hi[a] = region_.centre[a] + radius;
+      region_.lo[a] = region_.centre[a] - region_.radius;
+      region_.hi[a] = region_.centre[a] + region_.radius;
       if constexpr (!ScalarTraits<T>::isExact) {
         // Rounded outward, so that the box holds the ball.
         region_.lo[a] = std::nextafter(region_.lo[a], -std::numeric_limits<T>::infinity());
@@ -100,7 +188,13 @@ class LocalMinkowskiSum {
     patch_.rebuilt = true;
     gather();
     trimmer_.run(frame_, facets_, region_, overlap_, patch_);
-    for (Vec3<T>& v : patch_.vertices) v = poseA.rotation * v;
+    for (Vec3<T>& v : patch_.vertices) {
+      v = poseA.rotation * v;
+      if constexpr (!ScalarTraits<T>::isExact) {
+        if (scaleExp_ != 0)
+          for (int a = 0; a < 3; ++a) v[a] = std::ldexp(v[a], scaleExp_);
+      }
+    }
     return patch_;
   }
 
@@ -148,20 +242,20 @@ class LocalMinkowskiSum {
     const Eigen::Matrix3d Rt = R.transpose();
     for (int f = 0; f < A_.numTriangles(); ++f) {
       int& h = hintFA_[static_cast<std::size_t>(f)];
-      h = mapB_->locate(V3(-(Rt * ConvexMap<T>::unit(A_.triangleNormal(f)))), h);
+      h = mapB_->locate(V3(-(Rt * ConvexMap<T>::faceUnit(A_, f))), h);
       for (int v : mapB_->vertices(h)) consider({ConvolutionType::FV, f, v, 0});
     }
     for (int g = 0; g < B_.numTriangles(); ++g) {
       int& h = hintFB_[static_cast<std::size_t>(g)];
-      h = mapA_->locate(V3(-(R * ConvexMap<T>::unit(B_.triangleNormal(g)))), h);
+      h = mapA_->locate(V3(-(R * ConvexMap<T>::faceUnit(B_, g))), h);
       for (int u : mapA_->vertices(h)) consider({ConvolutionType::VF, u, g, 0});
     }
     edgeMarks_.assign(static_cast<std::size_t>(B_.numEdges()), -1);
     for (int e = 0; e < A_.numEdges(); ++e) {
       if (A_.edgeKind(e) != EdgeKind::Convex) continue;
       const auto tt = A_.edgeTriangles(e);
-      const V3 p = -(Rt * ConvexMap<T>::unit(A_.triangleNormal(tt.first)));
-      const V3 q = -(Rt * ConvexMap<T>::unit(A_.triangleNormal(tt.second)));
+      const V3 p = -(Rt * ConvexMap<T>::faceUnit(A_, tt.first));
+      const V3 q = -(Rt * ConvexMap<T>::faceUnit(A_, tt.second));
       mapB_->forCellsOnArc(p, q, hintEA_[static_cast<std::size_t>(e)], walk_, [&](int cell) {
         for (int ep : mapB_->edges(cell)) {
           int& m = edgeMarks_[static_cast<std::size_t>(ep)];
@@ -264,8 +358,34 @@ class LocalMinkowskiSum {
     if (seen_.insert(c.key()).second) consider(c);
   }
 
-  const TriangleMesh<T>& A_;
-  const TriangleMesh<T>& B_;
+  /// x in the units the pipeline works in (x · 2^-scaleExp_).
+  T scaled(const T& x) const {
+    if constexpr (ScalarTraits<T>::isExact) {
+      return x;
+    } else {
+      return std::ldexp(x, -scaleExp_);
+    }
+  }
+
+  /// Works from now on in units of 2^e (see CpdScale): the meshes scaled, and everything
+  /// built on them (overlap test, convex maps, hints) rebuilt. Only when the scene's scale
+  /// moves by a factor of 2^32 or more beyond 2^±64; never for a scene near unit scale.
+  void rescale(int e) {
+    scaleExp_ = e;
+    A_ = detail::scaledMesh(userA_, e);
+    B_ = detail::scaledMesh(userB_, e);
+    overlap_ = MeshOverlap<T>(A_, B_, Mat3<T>::Identity(), Vec3<T>::Zero());
+    mapA_.reset();
+    mapB_.reset();
+    hintFA_.clear();
+    hintFB_.clear();
+    hintEA_.clear();
+  }
+
+  TriangleMesh<T> userA_, userB_;  // as given (copies share their bodies)
+  detail::CpdScale<T> scale_;
+  int scaleExp_ = 0;  // A_ and B_ are the user's meshes times 2^-scaleExp_
+  TriangleMesh<T> A_, B_;
   LocalMinkowskiSumOptions<T> options_;
   ConvolutionFrame<T> frame_;
   MeshOverlap<T> overlap_;

@@ -97,7 +97,18 @@ bool Trimmer<T>::polygonMeetsBall(const int* v, int count) const {
   // Nearest point of the convex polygon: inside it (projection), else on a side.
   const std::size_t n = static_cast<std::size_t>(count);
   const Vec3<T>& x0 = coords_[static_cast<std::size_t>(v[0])];
-  const Vec3<T> nrm = (coords_[static_cast<std::size_t>(v[1])] - x0).cross(coords_[static_cast<std::size_t>(v[n - 1])] - x0);
+  Vec3<T> nrm = (coords_[static_cast<std::size_t>(v[1])] - x0).cross(coords_[static_cast<std::size_t>(v[n - 1])] - x0);
+  if constexpr (!ScalarTraits<T>::isExact) {
+    // |nrm| ~ L² and the tests below multiply it by lengths again: scale it by a power
+    // of two to a largest coordinate in [1/2, 1) so that nothing over- or underflows for
+    // scenes of any size fromMesh accepts (only its direction matters).
+    const T m = nrm.cwiseAbs().maxCoeff();
+    if (m > T(0) && std::isfinite(m)) {
+      int e = 0;
+      std::frexp(m, &e);
+      for (int k = 0; k < 3; ++k) nrm[k] = std::ldexp(nrm[k], -e);
+    }
+  }
   const T nn = nrm.squaredNorm();
   bool inside = nn > T(0);
   for (std::size_t i = 0; i < n && inside; ++i) {

@@ -146,7 +146,7 @@ class Trimmer {
         f.area = approxArea(p);
         // A sliver of no area (a cut that runs along a side within rounding) is dropped: its
         // centroid says nothing, and joining it would spread that to its neighbours.
-        if (!(f.area > sliverArea(p))) continue;
+        if (isSliver(p)) continue;
         finalV_.insert(finalV_.end(), p.v.begin(), p.v.end());
         finalE_.insert(finalE_.end(), p.e.begin(), p.e.end());
         f.wanted = (!region_.ball || meetsBall(p)) && !ownedByOther(static_cast<int>(s), p);
@@ -201,21 +201,35 @@ class Trimmer {
     bool wanted = false;  // meets the ball and is not a coplanar duplicate
   };
 
+  /// Approximate area of a piece, for choosing the piece a patch is tested at (stableNorm:
+  /// no overflow or underflow for any size fromMesh accepts).
   double approxArea(const Poly& p) const {
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
     const Eigen::Vector3d x0 = toD(coords_[static_cast<std::size_t>(p.v[0])]);
     for (std::size_t i = 1; i + 1 < p.v.size(); ++i)
       n += (toD(coords_[static_cast<std::size_t>(p.v[i])]) - x0).cross(toD(coords_[static_cast<std::size_t>(p.v[i + 1])]) - x0);
-    return 0.5 * n.norm();
+    return 0.5 * n.stableNorm();
   }
-  /// Below this a piece has no area to rounding: (2^-40 of its size)², its size the largest
-  /// coordinate of its corners or of their spread.
-  double sliverArea(const Poly& p) const {
+  /// Has the piece no area to rounding: below (2^-40 of its size)², its size the largest
+  /// coordinate of its corners or of their spread? Decided on the corners scaled by a
+  /// power of two to a size near one, so that neither square over- or underflows.
+  bool isSliver(const Poly& p) const {
     Box3 b;
     for (int id : p.v) b.add(toD(coords_[static_cast<std::size_t>(id)]));
     const double size = std::max((b.hi - b.lo).maxCoeff(), std::max(b.hi.cwiseAbs().maxCoeff(), b.lo.cwiseAbs().maxCoeff()));
-    const double s = std::ldexp(size, -40);
-    return s * s;
+    if (!(size > 0)) return true;
+    int e = 0;
+    std::frexp(size, &e);
+    const auto at = [&](std::size_t i) {
+      Eigen::Vector3d x = toD(coords_[static_cast<std::size_t>(p.v[i])]);
+      for (int k = 0; k < 3; ++k) x[k] = std::ldexp(x[k], -e);
+      return x;
+    };
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    const Eigen::Vector3d x0 = at(0);
+    for (std::size_t i = 1; i + 1 < p.v.size(); ++i) n += (at(i) - x0).cross(at(i + 1) - x0);
+    const double s = std::ldexp(1.0, -40);
+    return !(0.5 * n.norm() > s * s);
   }
 
   // ----- Patches ----------------------------------------------------------------------
