@@ -126,40 +126,6 @@ MeshShape scaled(MeshShape s, double k) {
 
 Mesh toMesh(const MeshShape& s) { return Mesh::fromMesh(s.verticesAs<double>(), s.triangles); }
 
-/// The closest point to p of the triangle a b c (C. Ericson, Real-Time Collision Detection, 5.1.5).
-V closestOnTriangle(const V& p, const V& a, const V& b, const V& c) {
-  const V ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const V bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
-  const V cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-  const double den = 1 / (va + vb + vc);
-  return a + ab * (vb * den) + ac * (vc * den);
-}
-
-/// The point of the patch nearest the origin; false if the patch is empty.
-bool nearestToOrigin(const Patch& p, V& out) {
-  double best = INFINITY;
-  for (const auto& t : p.triangles) {
-    const V q = closestOnTriangle(V::Zero(), p.vertices[t[0]], p.vertices[t[1]], p.vertices[t[2]]);
-    if (q.squaredNorm() < best) {
-      best = q.squaredNorm();
-      out = q;
-    }
-  }
-  return best < INFINITY;
-}
-
 struct Scene {
   std::string name;
   bool degenerate = false;
