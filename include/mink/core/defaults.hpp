@@ -111,5 +111,28 @@ constexpr double kMddCertificateSine = 1.0 / 256.0;
 /// 6 .. 1000 (any value is correct; a larger one only makes Undecided rarer).
 constexpr int kPointInMeshMaxRays = 64;
 
+/// CPD, Phong projection (cpd/phong_projection.hpp): Definition 1's λ_i >= 0 is accepted
+/// down to -this. Unit: barycentric coordinate (dimensionless). Safe range: 0 .. 1e-3
+/// (larger admits points past a triangle's edge, with that triangle's normals).
+constexpr double kPhongBarycentricTolerance = 1e-9;
+/// CPD, Phong projection: Newton steps per triangle before it is given up. From the
+/// barycentre of a triangle whose vertex normals are within Theorem 3's bound Newton
+/// converges in 3 .. 6 steps (quadratically). Unit: iterations. Safe range: 4 .. 100.
+constexpr int kPhongNewtonIterations = 30;
+/// CPD, Algorithm 2 (cpd/continuous_penetration_depth.hpp): the search ball's radius is
+/// alpha * |q| around the current candidate q (the paper's alpha, section 6.1).
+/// Unit: dimensionless. Safe range: 0.05 .. 2 (larger balls cost more triangles per step).
+constexpr double kCpdAlpha = 0.3;
+/// CPD, Algorithm 2: the factor by which the ball grows when the candidate does not
+/// improve (the paper's beta). Unit: dimensionless. Safe range: 1.2 .. 10.
+constexpr double kCpdBeta = 2.0;
+/// CPD, Algorithm 2: balls built per query before the best candidate is returned as
+/// CpdStatus::Approximate. Unit: iterations. Safe range: 1 .. 1000.
+constexpr int kCpdMaxIterations = 24;
+/// CPD, initialisation without a previous frame: bisection steps per direction for the
+/// first exit of the origin from M (each one mesh-overlap test). The exit only seeds the
+/// search ball, so 2^-30 of the scene's size is ample. Unit: steps. Safe range: 8 .. 60.
+constexpr int kCpdExitBisectionSteps = 30;
+
 }  // namespace defaults
 }  // namespace mink

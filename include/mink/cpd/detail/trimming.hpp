@@ -45,6 +45,7 @@
 #include "mink/core/orientation.hpp"
 #include "mink/cpd/convolution.hpp"
 #include "mink/mesh/detail/box_tree.hpp"
+#include "mink/mesh/detail/closest_point.hpp"
 #include "mink/cpd/minkowski_patch.hpp"
 #include "mink/mesh/mesh_overlap.hpp"
 
@@ -499,25 +500,7 @@ class Trimmer {
 
   static double squaredDistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                           const Eigen::Vector3d& c) {
-    // Closest point on a triangle (C. Ericson, Real-Time Collision Detection, 5.1.5).
-    const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-    if (d1 <= 0 && d2 <= 0) return ap.squaredNorm();
-    const Eigen::Vector3d bp = p - b;
-    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-    if (d3 >= 0 && d4 <= d3) return bp.squaredNorm();
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + (d1 / (d1 - d3)) * ab)).squaredNorm();
-    const Eigen::Vector3d cp = p - c;
-    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-    if (d6 >= 0 && d5 <= d6) return cp.squaredNorm();
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + (d2 / (d2 - d6)) * ac)).squaredNorm();
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-      return (p - (b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b))).squaredNorm();
-    const double den = 1.0 / (va + vb + vc);
-    return (p - (a + ab * (vb * den) + ac * (vc * den))).squaredNorm();
+    return (p - closestPointOnTriangle(p, a, b, c)).squaredNorm();
   }
 
   void emit(int piece, MinkowskiPatch<T>& out);

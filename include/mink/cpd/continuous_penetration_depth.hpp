@@ -1,0 +1,356 @@
+// mink/cpd/continuous_penetration_depth.hpp — the continuous penetration depth (CPD) of two
+// closed triangle meshes, and the Euclidean penetration depth from the same machinery.
+//
+// Source: Y. Lee, E. Behar, J.-M. Lien, Y. J. Kim, "Continuous penetration depth
+// computation for rigid models using dynamic Minkowski sums", CAD 2016, sections 3.3, 6
+// and Algorithm 2. M = poseA(A) ⊕ −poseB(B); B moved by x overlaps A iff x ∈ M, so the
+// interiors overlap iff the origin o is inside M, and the depth is a point q of ∂M.
+//   1. Separated (depth 0) when A and B share no point (mesh/mesh_overlap.hpp), or when
+//      they only touch: o lies on ∂M.
+//   2. Start q0: the previous frame's q when it still has ∂M around it (coherence), else
+//      the shortest first exit of o from M along a few directions (±x, ±y, ±z and the
+//      line between the shapes' centres), each found by bisection on the overlap test
+//      (mink's stand-in for the paper's PolyDepth: any point of ∂M will do to seed).
+//   3. Algorithm 2: the patch of ∂M in the ball S(q_i, r), r = alpha |q_i|
+//      (cpd/local_minkowski_sum.hpp); Phong projection of o onto every triangle
+//      (cpd/phong_projection.hpp); the nearest projection inside the ball is the answer.
+//      Otherwise the barycentre c of least |n̂ × c| (the paper's Ψ · c) becomes q_{i+1}
+//      if it improves on the best so far, else the ball grows by beta; after the caps the
+//      best candidate is returned as Approximate (it lies on ∂M).
+//   4. penetrationDepth(): the same loop with the nearest point of the patch to o instead
+//      of the Phong projection; it is a local minimum of |q| over ∂M when it lies strictly
+//      inside the ball.
+// Floating-point T only (Phong projection needs rounding and sqrt).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "mink/core/defaults.hpp"
+#include "mink/core/detail/input_checks.hpp"
+#include "mink/core/error.hpp"
+#include "mink/core/scalar_traits.hpp"
+#include "mink/core/types.hpp"
+#include "mink/cpd/local_minkowski_sum.hpp"
+#include "mink/cpd/phong_projection.hpp"
+#include "mink/mesh/detail/closest_point.hpp"
+#include "mink/mesh/mesh_overlap.hpp"
+#include "mink/mesh/triangle_intersection.hpp"
+#include "mink/mesh/triangle_mesh.hpp"
+
+namespace mink {
+
+/// Parameters of Algorithm 2 (defaults in core/defaults.hpp, with units and ranges).
+template <class T>
+struct CpdOptions {
+  T alpha = T(defaults::kCpdAlpha);          ///< ball radius = alpha |q| (dimensionless)
+  T beta = T(defaults::kCpdBeta);            ///< growth of the ball when q does not improve
+  int maxIterations = defaults::kCpdMaxIterations;   ///< balls built per query
+  int exitBisectionSteps = defaults::kCpdExitBisectionSteps;  ///< per start direction
+  PhongOptions<T> phong;                     ///< Definition 1's tolerance, Newton's cap
+  LocalMinkowskiSumOptions<T> localSum;      ///< how the patch finds its facets
+};
+
+enum class CpdStatus {
+  Separated,    ///< the interiors do not overlap (touching included): depth 0
+  Penetrating,  ///< overlap, and q satisfies Definition 1 (CPD) / is a local nearest point (PD)
+  Approximate,  ///< overlap, but no such q within the caps: q is the best found, on ∂M
+};
+
+/// The answer of a CPD or PD query. World frame, length unit of the meshes.
+template <class T>
+struct CpdResult {
+  CpdStatus status = CpdStatus::Separated;
+  T depth = T(0);                        ///< |q| >= 0
+  Vec3<T> direction = Vec3<T>::Zero();   ///< unit; B moved by depth * direction touches A (zero when Separated)
+  Vec3<T> point = Vec3<T>::Zero();       ///< q = depth * direction, a point of ∂M
+  Vec3<T> normal = Vec3<T>::Zero();      ///< unit outward normal of ∂M at q: the Phong one for CPD, the
+                                         ///< direction for PD; parallel to direction when Penetrating
+  ConvolutionPair pair;                  ///< the convolution facet q lies on: its features of A and B
+  T residual = T(0);                     ///< |normal × q|: how far o is from the normal line at q
+  int iterations = 0;                    ///< balls built (patches computed)
+  T radius = T(0);                       ///< the last ball's radius
+  long long trianglesBuilt = 0;          ///< patch triangles over all balls
+  bool fromPreviousFrame = false;        ///< the search started from the last query's q
+};
+
+namespace detail {
+
+/// Algorithm 2 for both queries: mode Phong (CPD) or Euclidean (PD).
+template <class T>
+class PenetrationSearch {
+  static_assert(!ScalarTraits<T>::isExact, "CPD: Phong projection needs a floating-point scalar");
+
+ public:
+  enum class Mode { Phong, Euclidean };
+
+  PenetrationSearch(const TriangleMesh<T>& A, const TriangleMesh<T>& B, const CpdOptions<T>& options)
+      : A_(A), B_(B), options_(options), sum_(A, B, options.localSum),
+        overlap_(A, B, Mat3<T>::Identity(), Vec3<T>::Zero()) {
+    if (!(options.alpha > T(0)) || !std::isfinite(options.alpha))
+      throw InvalidInput("CpdOptions: alpha must be positive and finite");
+    if (!(options.beta > T(1)) || !std::isfinite(options.beta))
+      throw InvalidInput("CpdOptions: beta must be greater than 1 and finite");
+    if (options.maxIterations < 1) throw InvalidInput("CpdOptions: maxIterations must be at least 1");
+    if (options.exitBisectionSteps < 1) throw InvalidInput("CpdOptions: exitBisectionSteps must be at least 1");
+    if (!(options.phong.barycentricTolerance >= T(0))) throw InvalidInput("CpdOptions: phong.barycentricTolerance must be >= 0");
+  }
+
+  CpdResult<T> run(const Pose<T>& poseA, const Pose<T>& poseB, Mode mode, const char* who) {
+    checkRigidPlacement(poseA.rotation, poseA.translation, who, "poseA");
+    checkRigidPlacement(poseB.rotation, poseB.translation, who, "poseB");
+    CpdResult<T> res;
+    RA_ = poseA.rotation;
+    overlap_.setPlacement(RA_.transpose() * poseB.rotation, RA_.transpose() * (poseB.translation - poseA.translation));
+    if (!overlap_.overlaps()) {
+      hasLast_ = false;
+      return res;
+    }
+    // The size of the scene: no point of ∂M is farther from o than this.
+    const Vec3<T> cA = poseA.apply(A_.sphereTree().centre(SphereTree<T>::root()));
+    const Vec3<T> cB = poseB.apply(B_.sphereTree().centre(SphereTree<T>::root()));
+    const T reach = (cA - cB).stableNorm() + A_.sphereTree().radius(SphereTree<T>::root()) +
+                    B_.sphereTree().radius(SphereTree<T>::root());
+    const T rMax = T(4) * reach;
+
+    Vec3<T> q;
+    if (hasLast_ && mode == lastMode_) {
+      q = last_;
+      res.fromPreviousFrame = true;
+    } else {
+      q = firstExit(cA - cB, reach);
+    }
+    T r = radiusAround(q);
+    T bestScore = std::numeric_limits<T>::infinity();
+    bool haveBest = false;
+    Candidate best;
+    for (int it = 0; it < options_.maxIterations; ++it) {
+      const MinkowskiPatch<T>& patch = sum_.update(poseA, poseB, q, r);
+      ++res.iterations;
+      res.radius = r;
+      res.trianglesBuilt += static_cast<long long>(patch.triangles.size());
+      if (patch.triangles.empty()) {
+        // The previous frame's q may now lie deep inside M (or far outside): start afresh.
+        if (res.fromPreviousFrame && it == 0) {
+          res.fromPreviousFrame = false;
+          q = firstExit(cA - cB, reach);
+          r = radiusAround(q);
+        } else {
+          r *= options_.beta;
+        }
+        if (r > rMax) break;
+        continue;
+      }
+      if (originOnPatch(patch)) {  // touching: o on ∂M
+        hasLast_ = false;
+        return CpdResult<T>{};
+      }
+      Candidate found, step;
+      const bool done = mode == Mode::Phong ? phongStep(patch, q, r, found, step) : euclideanStep(patch, q, r, found, step);
+      if (done) {
+        finish(found, CpdStatus::Penetrating, mode, res);
+        return res;
+      }
+      const T score = mode == Mode::Phong ? step.residual : step.point.stableNorm();
+      if (score < bestScore) {
+        bestScore = score;
+        best = step;
+        haveBest = true;
+        q = step.point;
+        r = radiusAround(q);
+      } else {
+        r *= options_.beta;
+      }
+      if (r > rMax) break;
+    }
+    if (!haveBest) {
+      // No patch at all within the caps: report the seed (on ∂M to the bisection's width).
+      best.point = q;
+      best.normal = q / q.stableNorm();
+      best.residual = T(0);
+    }
+    finish(best, CpdStatus::Approximate, mode, res);
+    return res;
+  }
+
+  void reset() { hasLast_ = false; }
+
+ private:
+  struct Candidate {
+    Vec3<T> point = Vec3<T>::Zero();
+    Vec3<T> normal = Vec3<T>::Zero();
+    T residual = T(0);
+    ConvolutionPair pair;
+  };
+
+  void finish(const Candidate& c, CpdStatus status, Mode mode, CpdResult<T>& res) {
+    res.status = status;
+    res.point = c.point;
+    res.depth = c.point.stableNorm();
+    res.direction = res.depth > T(0) ? Vec3<T>(c.point / res.depth) : Vec3<T>::Zero();
+    res.normal = c.normal;
+    res.pair = c.pair;
+    res.residual = c.normal.cross(c.point).stableNorm();
+    last_ = c.point;
+    lastMode_ = mode;
+    hasLast_ = res.depth > T(0);
+  }
+
+  /// alpha |q|, but positive (the patch needs a ball).
+  T radiusAround(const Vec3<T>& q) const {
+    return std::max(options_.alpha * q.stableNorm(), std::numeric_limits<T>::min());
+  }
+
+  /// The shortest first exit of o from M along the start directions (world frame): for
+  /// each, bisection between 0 (B overlaps A) and a translation that clears the shapes'
+  /// bounding spheres; the end that does not overlap is returned.
+  Vec3<T> firstExit(const Vec3<T>& between, const T& reach) {
+    std::array<Vec3<T>, 7> dirs = {Vec3<T>::UnitX(), Vec3<T>(-Vec3<T>::UnitX()), Vec3<T>::UnitY(),
+                                   Vec3<T>(-Vec3<T>::UnitY()), Vec3<T>::UnitZ(), Vec3<T>(-Vec3<T>::UnitZ()),
+                                   Vec3<T>::UnitX()};
+    int n = 6;
+    const T len = between.stableNorm();
+    if (len > T(0) && std::isfinite(len)) dirs[static_cast<std::size_t>(n++)] = between / len;
+    T bestT = std::numeric_limits<T>::infinity();
+    Vec3<T> best = Vec3<T>::Zero();
+    for (int k = 0; k < n; ++k) {
+      const Vec3<T> dA = RA_.transpose() * dirs[static_cast<std::size_t>(k)];  // in A's frame
+      T lo = T(0), hi = std::min(bestT, reach * T(1.0625));
+      if (overlap_.overlaps(Vec3<T>(hi * dA))) continue;  // no shorter than the best so far
+      for (int s = 0; s < options_.exitBisectionSteps; ++s) {
+        const T mid = (lo + hi) / T(2);
+        if (!(mid > lo && mid < hi)) break;
+        if (overlap_.overlaps(Vec3<T>(mid * dA)))
+          lo = mid;
+        else
+          hi = mid;
+      }
+      if (hi < bestT) {
+        bestT = hi;
+        best = hi * dirs[static_cast<std::size_t>(k)];
+      }
+    }
+    if (!std::isfinite(bestT)) best = reach * dirs[0];  // only if rounding kept every end overlapping
+    return best;
+  }
+
+  /// Does o lie on a triangle of the patch (exactly, on its corners' coordinates)?
+  static bool originOnPatch(const MinkowskiPatch<T>& patch) {
+    const Vec3<T> o = Vec3<T>::Zero();
+    for (const auto& t : patch.triangles) {
+      const Vec3<T>& a = patch.vertices[static_cast<std::size_t>(t[0])];
+      const Vec3<T>& b = patch.vertices[static_cast<std::size_t>(t[1])];
+      const Vec3<T>& c = patch.vertices[static_cast<std::size_t>(t[2])];
+      if (orient3d(a, b, c, o) != 0) continue;
+      const int k = properAxis(a, b, c);
+      if (k >= 0 && pointInTriangle2d(o, a, b, c, k)) return true;
+    }
+    return false;
+  }
+
+  /// CPD: the nearest Phong projection of o inside the ball (true), else in `step` the
+  /// barycentre of least residual.
+  bool phongStep(const MinkowskiPatch<T>& patch, const Vec3<T>& centre, const T& r, Candidate& found, Candidate& step) {
+    surface_.build(patch);
+    const Vec3<T> o = Vec3<T>::Zero();
+    T bestDepth = std::numeric_limits<T>::infinity();
+    step.residual = std::numeric_limits<T>::infinity();
+    bool any = false;
+    for (int t = 0; t < surface_.numTriangles(); ++t) {
+      const PhongHit<T> hit = surface_.project(t, o, options_.phong);
+      if (hit.found && (hit.point - centre).stableNorm() <= r) {
+        const T d = hit.point.stableNorm();
+        if (d < bestDepth) {
+          bestDepth = d;
+          found = {hit.point, hit.normal, hit.residual, patch.pairs[static_cast<std::size_t>(t)]};
+          any = true;
+        }
+      }
+      Vec3<T> c;
+      const T res = surface_.barycentreResidual(t, o, &c);
+      if (res < step.residual) {
+        const std::array<T, 3> third = {T(1) / T(3), T(1) / T(3), T(1) / T(3)};
+        step = {c, surface_.normalAt(t, third), res, patch.pairs[static_cast<std::size_t>(t)]};
+      }
+    }
+    if (!std::isfinite(step.residual)) {
+      // Every barycentre faces o (o outside M near this patch): step towards the nearest.
+      Candidate e;
+      euclideanStep(patch, centre, r, e, step);
+      step.residual = std::numeric_limits<T>::max();
+    }
+    return any;
+  }
+
+  /// PD: the nearest point of the patch to o; true when it lies strictly inside the ball
+  /// (then no point of ∂M near it is nearer: a local minimum).
+  bool euclideanStep(const MinkowskiPatch<T>& patch, const Vec3<T>& centre, const T& r, Candidate& found,
+                     Candidate& step) {
+    const Vec3<T> o = Vec3<T>::Zero();
+    T best = std::numeric_limits<T>::infinity();
+    for (std::size_t t = 0; t < patch.triangles.size(); ++t) {
+      const auto& tri = patch.triangles[t];
+      const Vec3<T>& a = patch.vertices[static_cast<std::size_t>(tri[0])];
+      const Vec3<T>& b = patch.vertices[static_cast<std::size_t>(tri[1])];
+      const Vec3<T>& c = patch.vertices[static_cast<std::size_t>(tri[2])];
+      const Vec3<T> p = closestPointOnTriangle(o, a, b, c);
+      const T d = p.squaredNorm();
+      if (d < best) {
+        best = d;
+        const T len = p.stableNorm();
+        step = {p, len > T(0) ? Vec3<T>(p / len) : Vec3<T>::Zero(), T(0), patch.pairs[t]};
+      }
+    }
+    found = step;
+    return std::isfinite(best) && (step.point - centre).stableNorm() < r;
+  }
+
+  TriangleMesh<T> A_, B_;
+  CpdOptions<T> options_;
+  LocalMinkowskiSum<T> sum_;
+  MeshOverlap<T> overlap_;
+  PhongSurface<T> surface_;
+  Mat3<T> RA_ = Mat3<T>::Identity();
+  Vec3<T> last_ = Vec3<T>::Zero();
+  Mode lastMode_ = Mode::Phong;
+  bool hasLast_ = false;
+};
+
+}  // namespace detail
+
+/// CPD of one pair of meshes, frame after frame: keeps its local Minkowski sum and the
+/// last answer's q, from which the next query starts (section 6.2).
+template <class T>
+class ContinuousPenetrationDepth {
+ public:
+  /// Throws InvalidInput for options out of range (alpha <= 0, beta <= 1, caps < 1).
+  ContinuousPenetrationDepth(const TriangleMesh<T>& A, const TriangleMesh<T>& B, const CpdOptions<T>& options = {})
+      : search_(A, B, options) {}
+
+  /// A at poseA, B at poseB (world frame). Throws InvalidInput for a pose that is not
+  /// rigid or not finite, before any work.
+  CpdResult<T> query(const Pose<T>& poseA, const Pose<T>& poseB) {
+    return search_.run(poseA, poseB, detail::PenetrationSearch<T>::Mode::Phong, "ContinuousPenetrationDepth::query");
+  }
+
+  /// Forget the previous frame: the next query starts from the exits of o.
+  void reset() { search_.reset(); }
+
+ private:
+  detail::PenetrationSearch<T> search_;
+};
+
+/// The Euclidean penetration depth found from the same start: a point q of ∂M nearest to
+/// o among the points of ∂M near it (a local minimum of |q|; the global one when the
+/// search's balls reach it first). Same result type; the normal is the direction.
+template <class T>
+CpdResult<T> penetrationDepth(const TriangleMesh<T>& A, const Pose<T>& poseA, const TriangleMesh<T>& B,
+                              const Pose<T>& poseB, const CpdOptions<T>& options = {}) {
+  detail::PenetrationSearch<T> search(A, B, options);
+  return search.run(poseA, poseB, detail::PenetrationSearch<T>::Mode::Euclidean, "penetrationDepth");
+}
+
+}  // namespace mink

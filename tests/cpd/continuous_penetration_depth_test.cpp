@@ -1,0 +1,268 @@
+// tests/cpd/continuous_penetration_depth_test.cpp — mink/cpd/continuous_penetration_depth.hpp
+// (ContinuousPenetrationDepth, penetrationDepth) against independent references:
+//   - axis-aligned boxes: M is the box [loA − hiB − t, hiA − loB − t], so ∂M, the exact
+//     Euclidean depth and the status are known in closed form;
+//   - turned boxes and non-convex pairs (L, U, torus, cube with a hole, star): q is on ∂M
+//     by FCL's BVH collide — B moved by q + δn does not meet A, B moved by q − δn does;
+//   - Definition 1 where the status is Penetrating: |n × q| <= 1e-9 |q|, n along q;
+//   - coherence: along a motion across the medial axis of M the CPD direction turns by
+//     a few degrees per frame while the Euclidean one jumps by 90;
+//   - touching and apart is Separated; bad poses and options are InvalidInput; float.
+#include "mink/cpd/continuous_penetration_depth.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "support/expect_rejected.hpp"
+#include "support/fcl_mesh.hpp"
+#include "support/mesh_shapes.hpp"
+
+namespace {
+
+using V = Eigen::Vector3d;
+using M3 = Eigen::Matrix3d;
+using Mesh = mink::TriangleMesh<double>;
+using Pose = mink::Pose<double>;
+using mink::CpdStatus;
+
+#ifdef MINK_SANITIZE_BUILD
+constexpr int kPlacements = 3;
+#else
+constexpr int kPlacements = 12;
+#endif
+
+Mesh mesh(const mink_test::MeshShape& s) { return Mesh::fromMesh(s.verticesAs<double>(), s.triangles); }
+
+Pose pose(const M3& R, const V& t) {
+  Pose p;
+  p.rotation = R;
+  p.translation = t;
+  return p;
+}
+
+M3 randomRotation(std::mt19937& rng) {
+  std::normal_distribution<double> n;
+  Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));
+  return q.normalized().toRotationMatrix();
+}
+
+/// Definition 1 and the conventions of CpdResult, for a Penetrating CPD answer.
+void expectPhongCondition(const mink::CpdResult<double>& r) {
+  EXPECT_NEAR(r.direction.norm(), 1, 1e-12);
+  EXPECT_NEAR((r.point - r.depth * r.direction).norm(), 0, 1e-12 * r.depth);
+  EXPECT_NEAR(r.normal.norm(), 1, 1e-12);
+  EXPECT_LE(r.normal.cross(r.point).norm(), 1e-9 * r.depth);
+  EXPECT_GT(r.normal.dot(r.direction), 0);
+}
+
+TEST(ContinuousPenetrationDepth, AxisAlignedBoxesAgainstTheClosedForm) {
+  const V loA(-1, -0.75, -0.5), hiA(1, 0.75, 0.5), loB(-0.4, -0.3, -0.6), hiB(0.4, 0.3, 0.6);
+  const Mesh A = mesh(mink_test::boxShape(loA, hiA)), B = mesh(mink_test::boxShape(loB, hiB));
+  mink::ContinuousPenetrationDepth<double> cpd(A, B);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const Pose I = pose(M3::Identity(), V::Zero());
+  int penetrating = 0;
+  for (int i = 0; i < 4 * kPlacements; ++i) {
+    const V t(1.3 * u(rng), 1.0 * u(rng), 1.0 * u(rng));
+    SCOPED_TRACE("placement " + std::to_string(i) + " t = (" + std::to_string(t.x()) + ", " + std::to_string(t.y()) +
+                 ", " + std::to_string(t.z()) + ")");
+    const V lo = loA - hiB - t, hi = hiA - loB - t;  // M
+    const bool inside = (lo.array() < 0).all() && (hi.array() > 0).all();
+    const double exactPd = std::min(-lo.maxCoeff(), hi.minCoeff());
+    cpd.reset();
+    const mink::CpdResult<double> r = cpd.query(I, pose(M3::Identity(), t));
+    const mink::CpdResult<double> e = mink::penetrationDepth(A, I, B, pose(M3::Identity(), t));
+    if (!inside) {
+      EXPECT_EQ(r.status, CpdStatus::Separated);
+      EXPECT_EQ(e.status, CpdStatus::Separated);
+      EXPECT_EQ(r.depth, 0);
+      continue;
+    }
+    ++penetrating;
+    ASSERT_EQ(r.status, CpdStatus::Penetrating);
+    ASSERT_EQ(e.status, CpdStatus::Penetrating);
+    for (const auto* x : {&r, &e}) {
+      // q on ∂M: within the box and on one of its faces.
+      const V q = x->point;
+      EXPECT_TRUE(((q - lo).array() >= -1e-12).all() && ((hi - q).array() >= -1e-12).all());
+      EXPECT_LE(std::min((q - lo).cwiseAbs().minCoeff(), (hi - q).cwiseAbs().minCoeff()), 1e-12);
+      EXPECT_GE(x->depth, exactPd - 1e-12);
+    }
+    // The Euclidean search starts from the exits along ±x, ±y, ±z: the nearest face.
+    EXPECT_NEAR(e.depth, exactPd, 1e-12);
+    expectPhongCondition(r);
+    // A fresh CPD query stays near the Euclidean depth on a box.
+    EXPECT_LE(r.depth, 1.5 * exactPd);
+  }
+  EXPECT_GE(penetrating, kPlacements);
+}
+
+/// q on ∂M by FCL: B moved by q + δn does not meet A, moved by q − δn it does.
+void expectOnBoundaryByFcl(mink_test::FclPair& fcl, const Pose& pa, const Pose& pb, const mink::CpdResult<double>& r,
+                           double delta) {
+  const M3 R = pa.rotation.transpose() * pb.rotation;
+  const V t = pa.rotation.transpose() * (pb.translation - pa.translation);
+  const V n = pa.rotation.transpose() * r.normal;
+  const V q = pa.rotation.transpose() * r.point;
+  EXPECT_FALSE(fcl.collide(R, t + q + delta * n)) << "B moved by q + δn still meets A";
+  EXPECT_TRUE(fcl.collide(R, t + q - delta * n)) << "B moved by q − δn does not meet A";
+}
+
+struct Pair {
+  std::string name;
+  mink_test::MeshShape a, b;
+  double spread;  // placements of B within this of A's centre
+};
+
+mink_test::MeshShape scaled(mink_test::MeshShape s, double f) {
+  for (auto& v : s.vertices) v *= f;
+  return s;
+}
+
+TEST(ContinuousPenetrationDepth, NonConvexPairsOnTheBoundaryByFcl) {
+  const std::vector<Pair> pairs = {
+      {"turned boxes", mink_test::boxShape(), mink_test::boxShape(V(-0.5, -0.3, -0.7), V(0.5, 0.3, 0.7)), 1.0},
+      {"L-block / box", mink_test::lBlock(), mink_test::boxShape(V(-0.5, -0.25, -0.75), V(0.5, 0.25, 0.75)), 0.8},
+      {"U-block / L-block", mink_test::uBlock(), mink_test::lBlock(), 0.8},
+      {"torus / box", mink_test::torus(12, 8), mink_test::boxShape(V(-0.4, -0.3, -0.5), V(0.4, 0.3, 0.5)), 1.5},
+      {"cube with hole / star", mink_test::cubeWithHole(), scaled(mink_test::starPrism(), 0.0625), 1.0}};
+  std::mt19937 rng(5);
+  for (const Pair& p : pairs) {
+    SCOPED_TRACE(p.name);
+    const Mesh A = mesh(p.a), B = mesh(p.b);
+    mink_test::FclPair fcl(A, B);
+    mink::ContinuousPenetrationDepth<double> cpd(A, B);
+    V ca = V::Zero(), cb = V::Zero();
+    for (const V& v : A.vertices()) ca += v / A.numVertices();
+    for (const V& v : B.vertices()) cb += v / B.numVertices();
+    std::uniform_real_distribution<double> u(-p.spread, p.spread);
+    int penetrating = 0, queries = 0;
+    for (int i = 0; i < kPlacements; ++i) {
+      const M3 RA = randomRotation(rng), RB = randomRotation(rng);
+      const V offset(u(rng), u(rng), u(rng));
+      // B's centre at A's centre + offset (world frame).
+      const Pose pa = pose(RA, V(0.3, -0.2, 0.1));
+      const Pose pb = pose(RB, pa.apply(ca) + offset - RB * cb);
+      SCOPED_TRACE("placement " + std::to_string(i));
+      cpd.reset();
+      const mink::CpdResult<double> r = cpd.query(pa, pb);
+      const mink::CpdResult<double> e = mink::penetrationDepth(A, pa, B, pb);
+      EXPECT_EQ(r.status == CpdStatus::Separated, e.status == CpdStatus::Separated);
+      if (r.status == CpdStatus::Separated) {
+        // FCL sees no containment: it can only confirm that the boundaries do not cross.
+        EXPECT_FALSE(fcl.collide(pa.rotation.transpose() * pb.rotation,
+                                 pa.rotation.transpose() * (pb.translation - pa.translation)));
+        continue;
+      }
+      ++queries;
+      const double delta = 1e-7;
+      expectOnBoundaryByFcl(fcl, pa, pb, r, delta);
+      expectOnBoundaryByFcl(fcl, pa, pb, e, delta);
+      if (r.status == CpdStatus::Penetrating) {
+        ++penetrating;
+        expectPhongCondition(r);
+      }
+      EXPECT_EQ(e.status, CpdStatus::Penetrating);
+    }
+    std::printf("%-22s %d of %d overlapping placements Penetrating (CPD)\n", p.name.c_str(), penetrating, queries);
+    EXPECT_GE(2 * penetrating, queries);
+  }
+}
+
+TEST(ContinuousPenetrationDepth, CoherentAcrossTheMedialAxisWhereEuclideanJumps) {
+  const Mesh A = mesh(mink_test::boxShape()), B = mesh(mink_test::boxShape(V(-0.5, -0.5, -0.5), V(0.5, 0.5, 0.5)));
+  mink::ContinuousPenetrationDepth<double> cpd(A, B);
+  const Pose I = pose(M3::Identity(), V::Zero());
+  // B slides along x + y = 1.2, across the plane x = y: the medial axis of M between its
+  // faces x = 1.5 and y = 1.5.
+  const int frames = 41;
+  double cpdTurn = 0, pdTurn = 0;
+  V lastC = V::Zero(), lastE = V::Zero();
+  for (int i = 0; i < frames; ++i) {
+    const double s = -0.2 + 0.4 * i / (frames - 1);
+    const Pose pb = pose(M3::Identity(), V(0.6 + s, 0.6 - s, 0.05));
+    const mink::CpdResult<double> r = cpd.query(I, pb);
+    const mink::CpdResult<double> e = mink::penetrationDepth(A, I, B, pb);
+    ASSERT_EQ(r.status, CpdStatus::Penetrating) << "frame " << i;
+    ASSERT_EQ(e.status, CpdStatus::Penetrating) << "frame " << i;
+    EXPECT_EQ(r.fromPreviousFrame, i > 0);
+    expectPhongCondition(r);
+    if (i > 0) {
+      cpdTurn = std::max(cpdTurn, std::acos(std::clamp(r.direction.dot(lastC), -1.0, 1.0)));
+      pdTurn = std::max(pdTurn, std::acos(std::clamp(e.direction.dot(lastE), -1.0, 1.0)));
+    }
+    lastC = r.direction;
+    lastE = e.direction;
+  }
+  const double deg = 180 / M_PI;
+  EXPECT_LT(cpdTurn * deg, 10) << "largest turn of the CPD direction between frames";
+  EXPECT_GT(pdTurn * deg, 80) << "the Euclidean direction jumps from one face of M to the next";
+  cpd.reset();
+  EXPECT_FALSE(cpd.query(I, pose(M3::Identity(), V(0.6, 0.6, 0.05))).fromPreviousFrame);
+}
+
+TEST(ContinuousPenetrationDepth, TouchingAndApartAreSeparated) {
+  const Mesh A = mesh(mink_test::boxShape()), B = mesh(mink_test::boxShape(V(-0.5, -0.5, -0.5), V(0.5, 0.5, 0.5)));
+  mink::ContinuousPenetrationDepth<double> cpd(A, B);
+  const Pose I = pose(M3::Identity(), V::Zero());
+  for (const V& t : {V(1.5, 0.2, 0.1), V(1.5, 1.5, 0.0), V(1.5, 1.5, 1.5), V(1.6, 0.0, 0.0), V(0.0, -3.0, 0.0)}) {
+    SCOPED_TRACE("t = (" + std::to_string(t.x()) + ", " + std::to_string(t.y()) + ", " + std::to_string(t.z()) + ")");
+    const mink::CpdResult<double> r = cpd.query(I, pose(M3::Identity(), t));
+    EXPECT_EQ(r.status, CpdStatus::Separated);
+    EXPECT_EQ(r.depth, 0);
+    EXPECT_EQ(mink::penetrationDepth(A, I, B, pose(M3::Identity(), t)).status, CpdStatus::Separated);
+  }
+  // One shape wholly inside the other overlaps.
+  const mink::CpdResult<double> in = cpd.query(I, pose(M3::Identity(), V(0.1, 0.0, 0.0)));
+  EXPECT_EQ(in.status, CpdStatus::Penetrating);
+  EXPECT_NEAR(in.depth, 1.4, 1e-12);  // M = [-1.5, 1.5]^3 − (0.1, 0, 0): its face x = 1.4
+}
+
+TEST(ContinuousPenetrationDepth, BadPosesAndOptionsAreInvalidInput) {
+  const Mesh A = mesh(mink_test::boxShape()), B = mesh(mink_test::lBlock());
+  mink::ContinuousPenetrationDepth<double> cpd(A, B);
+  const Pose I = pose(M3::Identity(), V::Zero());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  mink_test::expectRejected([&] { cpd.query(I, pose(M3::Identity(), V(nan, 0, 0))); }, "poseB", "NaN translation");
+  mink_test::expectRejected([&] { cpd.query(pose(2 * M3::Identity(), V::Zero()), I); }, "poseA", "scaled rotation");
+  M3 reflect = M3::Identity();
+  reflect(2, 2) = -1;
+  mink_test::expectRejected([&] { mink::penetrationDepth(A, I, B, pose(reflect, V::Zero())); }, "poseB", "reflection");
+  mink::CpdOptions<double> o;
+  o.alpha = 0;
+  mink_test::expectRejected([&] { mink::ContinuousPenetrationDepth<double>(A, B, o); }, "alpha", "alpha 0");
+  o = {};
+  o.beta = 1;
+  mink_test::expectRejected([&] { mink::ContinuousPenetrationDepth<double>(A, B, o); }, "beta", "beta 1");
+  o = {};
+  o.maxIterations = 0;
+  mink_test::expectRejected([&] { mink::ContinuousPenetrationDepth<double>(A, B, o); }, "maxIterations", "no iteration");
+}
+
+TEST(ContinuousPenetrationDepth, FloatAgreesWithDouble) {
+  const mink_test::MeshShape a = mink_test::lBlock(), b = mink_test::boxShape(V(-0.5, -0.25, -0.75), V(0.5, 0.25, 0.75));
+  const mink::TriangleMesh<float> Af = mink::TriangleMesh<float>::fromMesh(a.verticesAs<float>(), a.triangles);
+  const mink::TriangleMesh<float> Bf = mink::TriangleMesh<float>::fromMesh(b.verticesAs<float>(), b.triangles);
+  const Mesh A = mesh(a), B = mesh(b);
+  mink::ContinuousPenetrationDepth<float> cf(Af, Bf);
+  mink::ContinuousPenetrationDepth<double> cd(A, B);
+  for (const V& t : {V(0.5, 0.5, 0.5), V(1.4, 0.4, 0.3), V(0.4, 1.5, 0.6)}) {
+    mink::Pose<float> pf;
+    pf.translation = t.cast<float>();
+    const auto rf = cf.query(mink::Pose<float>(), pf);
+    const auto rd = cd.query(Pose(), pose(M3::Identity(), t));
+    ASSERT_EQ(rd.status, CpdStatus::Penetrating);
+    EXPECT_EQ(static_cast<int>(rf.status), static_cast<int>(rd.status));
+    EXPECT_NEAR(rf.depth, rd.depth, 1e-5);
+  }
+}
+
+}  // namespace
