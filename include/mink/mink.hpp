@@ -36,11 +36,13 @@
 
 // cpd: the boundary of M = A ⊕ −B for two meshes — convex maps, convolution, trimming, the
 // local Minkowski sum in a ball and the whole boundary.
+#include "mink/cpd/continuous_penetration_depth.hpp"
 #include "mink/cpd/convex_map.hpp"
 #include "mink/cpd/convolution.hpp"
 #include "mink/cpd/local_minkowski_sum.hpp"
 #include "mink/cpd/minkowski_boundary.hpp"
 #include "mink/cpd/minkowski_patch.hpp"
+#include "mink/cpd/phong_projection.hpp"
 
 // io: OBJ and OFF readers and writers, and OBJ / OFF to TriangleMesh.
 #include "mink/io/indexed_mesh.hpp"

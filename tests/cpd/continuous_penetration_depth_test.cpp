@@ -105,15 +105,28 @@ TEST(ContinuousPenetrationDepth, AxisAlignedBoxesAgainstTheClosedForm) {
   EXPECT_GE(penetrating, kPlacements);
 }
 
-/// q on ∂M by FCL: B moved by q + δn does not meet A, moved by q − δn it does.
+/// q on ∂M by FCL: B moved by q − δn meets A, and moved by q + δn it does not (CPD: n is
+/// the Phong normal, outward) or, for the Euclidean depth, by q + δd for one of the 26
+/// directions d of a cube's corners, edges and faces or along n: a local nearest point of
+/// ∂M can be the corner of a step (a concave crease of ∂M, where o's projections on the
+/// two faces fall outside them), and there the direction to it points into M again.
 void expectOnBoundaryByFcl(mink_test::FclPair& fcl, const Pose& pa, const Pose& pb, const mink::CpdResult<double>& r,
-                           double delta) {
+                           double delta, bool outwardNormal) {
   const M3 R = pa.rotation.transpose() * pb.rotation;
   const V t = pa.rotation.transpose() * (pb.translation - pa.translation);
   const V n = pa.rotation.transpose() * r.normal;
   const V q = pa.rotation.transpose() * r.point;
-  EXPECT_FALSE(fcl.collide(R, t + q + delta * n)) << "B moved by q + δn still meets A";
   EXPECT_TRUE(fcl.collide(R, t + q - delta * n)) << "B moved by q − δn does not meet A";
+  if (outwardNormal) {
+    EXPECT_FALSE(fcl.collide(R, t + q + delta * n)) << "B moved by q + δn still meets A";
+    return;
+  }
+  bool free = !fcl.collide(R, t + q + delta * n);
+  for (int i = -1; i <= 1 && !free; ++i)
+    for (int j = -1; j <= 1 && !free; ++j)
+      for (int k = -1; k <= 1 && !free; ++k)
+        if (i || j || k) free = !fcl.collide(R, t + q + delta * V(i, j, k).normalized());
+  EXPECT_TRUE(free) << "every translation within δ of q meets A: q is inside M";
 }
 
 struct Pair {
@@ -164,8 +177,8 @@ TEST(ContinuousPenetrationDepth, NonConvexPairsOnTheBoundaryByFcl) {
       }
       ++queries;
       const double delta = 1e-7;
-      expectOnBoundaryByFcl(fcl, pa, pb, r, delta);
-      expectOnBoundaryByFcl(fcl, pa, pb, e, delta);
+      expectOnBoundaryByFcl(fcl, pa, pb, r, delta, true);
+      expectOnBoundaryByFcl(fcl, pa, pb, e, delta, false);
       if (r.status == CpdStatus::Penetrating) {
         ++penetrating;
         expectPhongCondition(r);

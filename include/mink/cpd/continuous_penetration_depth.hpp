@@ -345,7 +345,10 @@ class ContinuousPenetrationDepth {
 
 /// The Euclidean penetration depth found from the same start: a point q of ∂M nearest to
 /// o among the points of ∂M near it (a local minimum of |q|; the global one when the
-/// search's balls reach it first). Same result type; the normal is the direction.
+/// search's balls reach it first). Same result type; the normal is the direction. Such a
+/// point can be the corner of a step of ∂M (a concave crease whose two faces both turn
+/// away from o); B moved by depth * direction touches A there, but moving it a little
+/// further along direction makes them overlap again.
 template <class T>
 CpdResult<T> penetrationDepth(const TriangleMesh<T>& A, const Pose<T>& poseA, const TriangleMesh<T>& B,
                               const Pose<T>& poseB, const CpdOptions<T>& options = {}) {
