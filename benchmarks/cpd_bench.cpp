@@ -56,22 +56,14 @@
 //   --verbose         every local update's time and sizes on stderr
 //   --quick           8 frames, 2 samples of the whole boundary, 10 s limits, CGAL only on
 //                     the degenerate family (smoke test, numbers not for publication)
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <time.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <functional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -101,14 +93,8 @@ constexpr double kBall = 50;      // the paper's ε-ball radius
 
 M3 rot(double angle, const V& axis) { return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix(); }
 
-double cpuMs() {
-  timespec ts;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
-double wallMs() {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+using mink_bench::wallMs;
+double cpuMs() { return mink_bench::threadCpuMs(); }
 
 MeshShape fromObj(const std::string& file) {
   const Mesh m = mink::io::readTriangleMesh<double>(std::string(MINK_BENCH_DATA_DIR) + "/" + file);
@@ -294,65 +280,14 @@ double mRadius(const MeshShape& a, const MeshShape& b, const M3& R, const V& t) 
   return mink::detail::enclosingSphere(pts.data(), static_cast<int>(pts.size())).radius;
 }
 
-/// One timed call, as the child process reports it (fixed size: written atomically).
+/// One timed call, as the child process reports it (mink_bench::inChild).
 struct Record {
   double frame, cpu, wall, facets, pieces, tests, nodes, candidates, triangles, area;
 };
-static_assert(sizeof(Record) < 512, "a record must be written atomically (PIPE_BUF)");
 
 Record record(int f, double cpu, double wall, const Patch& P) {
   return {double(f), cpu, wall, double(P.facetsGathered), double(P.pieces), double(P.overlapTests),
           double(P.nodePairs), double(P.candidatePairs), double(P.triangles.size()), mink_test::measure(P).area};
-}
-
-/// Runs work(emit) in a child process stopped after timeoutS seconds of wall time; the
-/// records emitted before that. `finished` tells whether the child ran to its end.
-/// childCpuMs: the CPU time the child used in all (a lower bound on the unfinished call's
-/// time when no record came back).
-std::vector<Record> inChild(double timeoutS, const std::function<void(const std::function<void(const Record&)>&)>& work,
-                            bool& finished, double* childCpuMs = nullptr) {
-  std::vector<Record> out;
-  finished = false;
-  rusage ru{};
-  int fd[2];
-  if (pipe(fd) != 0) return out;
-  const pid_t pid = fork();
-  if (pid < 0) return out;
-  if (pid == 0) {
-    close(fd[0]);
-    work([&](const Record& r) {
-      if (write(fd[1], &r, sizeof r) != sizeof r) _exit(1);
-    });
-    _exit(0);
-  }
-  close(fd[1]);
-  const double w0 = wallMs();
-  int status = 0;
-  bool done = false;
-  // Drain the pipe while waiting, so that a child with many records never blocks.
-  fcntl(fd[0], F_SETFL, O_NONBLOCK);
-  Record r;
-  auto drain = [&] {
-    while (read(fd[0], &r, sizeof r) == sizeof r) out.push_back(r);
-  };
-  while (wallMs() - w0 < timeoutS * 1e3) {
-    drain();
-    if (wait4(pid, &status, WNOHANG, &ru) == pid) {
-      done = true;
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  if (!done) {
-    kill(pid, SIGKILL);
-    wait4(pid, &status, 0, &ru);
-  }
-  if (childCpuMs)
-    *childCpuMs = (ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) * 1e3 + (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) * 1e-3;
-  drain();
-  close(fd[0]);
-  finished = done && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-  return out;
 }
 
 struct Stats {
@@ -484,7 +419,7 @@ int main(int argc, char** argv) {
     for (int i = 0; i < fullSamples; ++i) fullFrames.push_back(i * (frames - 1) / std::max(1, fullSamples - 1));
     bool fullDone = false;
     double fullChildCpu = 0;
-    const std::vector<Record> fullRecs = inChild(
+    const std::vector<Record> fullRecs = mink_bench::inChild<Record>(
         fullTimeout,
         [&](const std::function<void(const Record&)>& emit) {
           for (int f : fullFrames) {
@@ -513,7 +448,7 @@ int main(int argc, char** argv) {
     double methodChildCpu[3] = {0, 0, 0};
     for (int m = 0; m < 3; ++m) {
       const double limit = m == 2 ? coherentTimeout : methodTimeout;
-      const std::vector<Record> recs = inChild(
+      const std::vector<Record> recs = mink_bench::inChild<Record>(
           limit,
           [&](const std::function<void(const Record&)>& emit) {
             mink::LocalMinkowskiSumOptions<double> o;
@@ -554,7 +489,7 @@ int main(int argc, char** argv) {
     std::string cgalNote;
     if (sc.cgal && (!quick || family)) {
       bool ok = false;
-      const std::vector<Record> recs = inChild(
+      const std::vector<Record> recs = mink_bench::inChild<Record>(
           cgalTimeout,
           [&](const std::function<void(const Record&)>& emit) {
             std::vector<Eigen::Vector3d> placed;
