@@ -22,6 +22,10 @@
 //   torus/box        A = torus 12 x 8 (R 2, r 0.75, 192 triangles), B = [±0.4, ±0.3, ±0.5]
 //                    turned by G at (1.75 + 0.5 u, 0.1, 0.05): radially across the tube's
 //                    centre line, where the exits inward and outward tie.
+//   torus/box deep   A = torus 16 x 12 (384 triangles), B = [±0.2]^3 turned by G, its centre
+//                    circling the tube's centre line at 0.3 (2 + 0.3 cos 6u, 0.3 sin 6u,
+//                    0.1): o stays ~0.5 inside ∂M, farther than the facets are wide, where
+//                    Phong projections are many and close (Theorem 3 asks for o near ∂M).
 //   L-block/box turning  A = L-block, B = [±0.45, ±0.2, ±0.75], turning by 1.2 u rad
 //                    (69°) about (0.2, 0.3, 1) after G, along the L-block/box path.
 // Per scene, three queries per frame, each timed alone:
@@ -132,6 +136,14 @@ std::vector<Scene> scenes() {
     s.a = mink_test::torus(12, 8);
     s.b = mink_test::boxShape(V(-0.4, -0.3, -0.5), V(0.4, 0.3, 0.5));
     s.motion = [G](double u) { return pose(G, V(1.75 + 0.5 * u, 0.1, 0.05)); };
+    out.push_back(s);
+  }
+  {
+    Scene s;
+    s.name = "torus/box deep";
+    s.a = mink_test::torus(16, 12);
+    s.b = mink_test::boxShape(V(-0.2, -0.2, -0.2), V(0.2, 0.2, 0.2));
+    s.motion = [G](double u) { return pose(G, V(2.0 + 0.3 * std::cos(6 * u), 0.3 * std::sin(6 * u), 0.1)); };
     out.push_back(s);
   }
   {

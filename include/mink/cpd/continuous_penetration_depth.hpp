@@ -13,7 +13,11 @@
 //      (mink's stand-in for the paper's PolyDepth: any point of ∂M will do to seed).
 //   3. Algorithm 2: the patch of ∂M in the ball S(q_i, r), r = alpha |q_i|
 //      (cpd/local_minkowski_sum.hpp); Phong projection of o onto every triangle
-//      (cpd/phong_projection.hpp); the nearest projection inside the ball is the answer.
+//      (cpd/phong_projection.hpp); the nearest projection inside the ball is the answer —
+//      nearest to o, or, in the first ball of a query started from the last frame's q,
+//      nearest to that q (the continuation of the last answer: where ∂M has several
+//      projections near q, as deep inside a coarse curved M, the nearest to o can switch
+//      between them from frame to frame).
 //      Otherwise the barycentre c of least |n̂ × c| (the paper's Ψ · c) becomes q_{i+1}
 //      if it improves on the best so far, else the ball grows by beta; after the caps the
 //      best candidate is returned as Approximate (it lies on ∂M).
@@ -149,7 +153,7 @@ class PenetrationSearch {
         return CpdResult<T>{};
       }
       Candidate found, step;
-      const bool done = mode == Mode::Phong ? phongStep(patch, q, r, found, step) : euclideanStep(patch, q, r, found, step);
+      const bool done = mode == Mode::Phong ? phongStep(patch, q, r, res.fromPreviousFrame && it == 0, found, step) : euclideanStep(patch, q, r, found, step);
       if (done) {
         finish(found, CpdStatus::Penetrating, mode, res);
         return res;
@@ -251,9 +255,9 @@ class PenetrationSearch {
     return false;
   }
 
-  /// CPD: the nearest Phong projection of o inside the ball (true), else in `step` the
-  /// barycentre of least residual.
-  bool phongStep(const MinkowskiPatch<T>& patch, const Vec3<T>& centre, const T& r, Candidate& found, Candidate& step) {
+  /// CPD: the Phong projection of o inside the ball nearest to o (nearest to the centre
+  /// when `follow`) (true), else in `step` the barycentre of least residual.
+  bool phongStep(const MinkowskiPatch<T>& patch, const Vec3<T>& centre, const T& r, bool follow, Candidate& found, Candidate& step) {
     surface_.build(patch);
     const Vec3<T> o = Vec3<T>::Zero();
     T bestDepth = std::numeric_limits<T>::infinity();
@@ -262,7 +266,7 @@ class PenetrationSearch {
     for (int t = 0; t < surface_.numTriangles(); ++t) {
       const PhongHit<T> hit = surface_.project(t, o, options_.phong);
       if (hit.found && (hit.point - centre).stableNorm() <= r) {
-        const T d = hit.point.stableNorm();
+        const T d = follow ? (hit.point - centre).stableNorm() : hit.point.stableNorm();
         if (d < bestDepth) {
           bestDepth = d;
           found = {hit.point, hit.normal, hit.residual, patch.pairs[static_cast<std::size_t>(t)]};
