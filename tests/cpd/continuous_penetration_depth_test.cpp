@@ -53,6 +53,8 @@ Pose pose(const M3& R, const V& t) {
   return p;
 }
 
+M3 rotation(double angle, const V& axis) { return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix(); }
+
 M3 randomRotation(std::mt19937& rng) {
   std::normal_distribution<double> n;
   Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));
@@ -317,6 +319,38 @@ TEST(ContinuousPenetrationDepth, TouchingAndApartAreSeparated) {
   const mink::CpdResult<double> in = cpd.query(I, pose(M3::Identity(), V(0.1, 0.0, 0.0)));
   EXPECT_EQ(in.status, CpdStatus::Penetrating);
   EXPECT_NEAR(in.depth, 1.4, 1e-12);  // M = [-1.5, 1.5]^3 − (0.1, 0, 0): its face x = 1.4
+}
+
+TEST(ContinuousPenetrationDepth, ScalingByAPowerOfTwoScalesTheAnswer) {
+  // Every step scales with the scene: bisection on exact predicates, the local sum's own
+  // power-of-two unit, Phong projection and the nearest point in the patch's unit frame.
+  const mink_test::MeshShape a = mink_test::lBlock(), b = mink_test::boxShape(V(-0.5, -0.25, -0.75), V(0.5, 0.25, 0.75));
+  const M3 RA = rotation(0.3, V(1, 2, 3)), RB = rotation(-0.7, V(0.2, -1, 0.5));
+  const V tA(0.25, -0.5, 0.125), tB(1.375, 0.75, 0.5);
+  mink::CpdResult<double> unitCpd, unitPd;
+  for (int k : {0, -600, -60, 60, 280}) {
+    SCOPED_TRACE("scale 2^" + std::to_string(k));
+    const double f = std::ldexp(1.0, k);
+    const Mesh A = mesh(scaled(a, f)), B = mesh(scaled(b, f));
+    const Pose pa = pose(RA, f * tA), pb = pose(RB, f * tB);
+    mink::ContinuousPenetrationDepth<double> cpd(A, B);
+    const mink::CpdResult<double> r = cpd.query(pa, pb);
+    const mink::CpdResult<double> e = mink::penetrationDepth(A, pa, B, pb);
+    if (k == 0) {
+      ASSERT_EQ(r.status, CpdStatus::Penetrating);
+      ASSERT_EQ(e.status, CpdStatus::Penetrating);
+      unitCpd = r;
+      unitPd = e;
+      continue;
+    }
+    EXPECT_EQ(r.status, unitCpd.status);
+    EXPECT_EQ(e.status, unitPd.status);
+    EXPECT_NEAR(r.depth / f, unitCpd.depth, 1e-12 * unitCpd.depth);
+    EXPECT_NEAR(e.depth / f, unitPd.depth, 1e-12 * unitPd.depth);
+    EXPECT_NEAR((r.direction - unitCpd.direction).norm(), 0, 1e-12);
+    EXPECT_NEAR((r.normal - unitCpd.normal).norm(), 0, 1e-12);
+    EXPECT_LE(r.normal.cross(r.point).norm(), 1e-9 * r.depth);
+  }
 }
 
 TEST(ContinuousPenetrationDepth, BadPosesAndOptionsAreInvalidInput) {

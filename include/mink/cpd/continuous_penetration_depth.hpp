@@ -293,17 +293,29 @@ class PenetrationSearch {
   /// (then no point of ∂M near it is nearer: a local minimum).
   bool euclideanStep(const MinkowskiPatch<T>& patch, const Vec3<T>& centre, const T& r, Candidate& found,
                      Candidate& step) {
-    const Vec3<T> o = Vec3<T>::Zero();
+    // In the ball's unit frame (centre at 0, radius scaled to [1/2, 1) by a power of two):
+    // the closest-point construction multiplies coordinates, which would underflow for a
+    // patch at 2^-600 and lose the region tests.
+    int e = 0;
+    std::frexp(r, &e);
+    auto local = [&](const Vec3<T>& x) {
+      Vec3<T> y;
+      for (int k = 0; k < 3; ++k) y[k] = std::ldexp(x[k] - centre[k], -e);
+      return y;
+    };
+    const Vec3<T> o = local(Vec3<T>::Zero());
     T best = std::numeric_limits<T>::infinity();
     for (std::size_t t = 0; t < patch.triangles.size(); ++t) {
       const auto& tri = patch.triangles[t];
-      const Vec3<T>& a = patch.vertices[static_cast<std::size_t>(tri[0])];
-      const Vec3<T>& b = patch.vertices[static_cast<std::size_t>(tri[1])];
-      const Vec3<T>& c = patch.vertices[static_cast<std::size_t>(tri[2])];
-      const Vec3<T> p = closestPointOnTriangle(o, a, b, c);
-      const T d = p.squaredNorm();
+      const Vec3<T> a = local(patch.vertices[static_cast<std::size_t>(tri[0])]);
+      const Vec3<T> b = local(patch.vertices[static_cast<std::size_t>(tri[1])]);
+      const Vec3<T> c = local(patch.vertices[static_cast<std::size_t>(tri[2])]);
+      const Vec3<T> pl = closestPointOnTriangle(o, a, b, c);
+      const T d = (pl - o).squaredNorm();
       if (d < best) {
         best = d;
+        Vec3<T> p;
+        for (int k = 0; k < 3; ++k) p[k] = centre[k] + std::ldexp(pl[k], e);
         const T len = p.stableNorm();
         step = {p, len > T(0) ? Vec3<T>(p / len) : Vec3<T>::Zero(), T(0), patch.pairs[t]};
       }

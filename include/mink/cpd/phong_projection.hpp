@@ -58,7 +58,10 @@ struct PhongHit {
 };
 
 /// A patch of ∂M with continuous (Phong) normals. build() once per patch; project()
-/// per triangle. Reuses its storage between builds.
+/// per triangle. Reuses its storage between builds. The work is done on the patch moved
+/// to its bounding box's centre and scaled by a power of two to unit extent, so that the
+/// products of coordinates neither over- nor underflow for a patch at 2^-900 or 2^290;
+/// points and residuals in and out are in the patch's frame and unit.
 template <class T>
 class PhongSurface {
   static_assert(!ScalarTraits<T>::isExact, "PhongSurface: Phong projection needs a floating-point scalar");
@@ -82,6 +85,20 @@ class PhongSurface {
                         patch.vertices[static_cast<std::size_t>(order_[static_cast<std::size_t>(i - 1)])])
         points_.push_back(patch.vertices[static_cast<std::size_t>(v)]);
       merged_[static_cast<std::size_t>(v)] = static_cast<int>(points_.size()) - 1;
+    }
+    // The unit frame: the bounding box's centre, its extent scaled to [1/2, 1).
+    exp_ = 0;
+    origin_ = Vec3<T>::Zero();
+    if (!points_.empty()) {
+      Vec3<T> lo = points_[0], hi = points_[0];
+      for (const Vec3<T>& p : points_) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+      for (int k = 0; k < 3; ++k) origin_[k] = lo[k] + (hi[k] - lo[k]) / T(2);
+      const T extent = (hi - lo).maxCoeff();
+      if (extent > T(0) && std::isfinite(extent)) std::frexp(extent, &exp_);
+      for (Vec3<T>& p : points_) p = toLocal(p);
     }
     normals_.assign(points_.size(), Vec3<T>::Zero());
     triangles_.clear();
@@ -111,13 +128,14 @@ class PhongSurface {
 
   int numTriangles() const { return static_cast<int>(triangles_.size()); }
   int numPoints() const { return static_cast<int>(points_.size()); }
-  /// Corner k of triangle t (merged coordinates).
-  const Vec3<T>& corner(int t, int k) const { return point(triangles_[static_cast<std::size_t>(t)][k]); }
+  /// Corner k of triangle t (merged coordinates, the patch's frame).
+  Vec3<T> corner(int t, int k) const { return toWorld(localCorner(t, k)); }
   /// Unit vertex normal of corner k of triangle t.
   const Vec3<T>& cornerNormal(int t, int k) const {
     return normals_[static_cast<std::size_t>(triangles_[static_cast<std::size_t>(t)][k])];
   }
-  /// (v1 − v0) × (v2 − v0) of triangle t: outward, twice its area long.
+  /// (v1 − v0) × (v2 − v0) of triangle t in the unit frame: outward (its length is twice
+  /// the area in that frame's unit).
   const Vec3<T>& faceNormal(int t) const { return faceNormals_[static_cast<std::size_t>(t)]; }
 
   /// The unit interpolated normal at barycentric lambda of triangle t (zero where singular).
@@ -127,10 +145,8 @@ class PhongSurface {
     return len > T(0) ? Vec3<T>(n / len) : Vec3<T>::Zero();
   }
 
-  /// The point at barycentric lambda of triangle t.
-  Vec3<T> pointAt(int t, const std::array<T, 3>& lambda) const {
-    return lambda[0] * corner(t, 0) + lambda[1] * corner(t, 1) + lambda[2] * corner(t, 2);
-  }
+  /// The point at barycentric lambda of triangle t (the patch's frame).
+  Vec3<T> pointAt(int t, const std::array<T, 3>& lambda) const { return toWorld(localPointAt(t, lambda)); }
 
   /// Phong projection of o onto triangle t (Definition 1), by Newton's method from the
   /// barycentre (the paper's start) and, if that does not end inside t, from six more
@@ -140,18 +156,21 @@ class PhongSurface {
     static constexpr T kStarts[7][2] = {{T(1) / T(3), T(1) / T(3)}, {T(0.8), T(0.1)}, {T(0.1), T(0.8)},
                                         {T(0.1), T(0.1)},           {T(0.5), T(0.5)}, {T(0), T(0.5)},
                                         {T(0.5), T(0)}};
+    const Vec3<T> oL = toLocal(o);
     PhongHit<T> first;
     int iterations = 0;
     for (int k = 0; k < 7; ++k) {
-      PhongHit<T> hit = newton(t, o, options, kStarts[k][0], kStarts[k][1]);
+      PhongHit<T> hit = newton(t, oL, options, kStarts[k][0], kStarts[k][1]);
       iterations += hit.iterations;
-      if (hit.found) {
+      if (hit.found || k == 6) {
+        if (!hit.found) hit = first;
         hit.iterations = iterations;
+        hit.point = toWorld(hit.point);
+        hit.residual = std::ldexp(hit.residual, exp_);
         return hit;
       }
       if (k == 0) first = hit;
     }
-    first.iterations = iterations;
     return first;
   }
 
@@ -160,20 +179,36 @@ class PhongSurface {
   /// normal there is singular or points o's way (o outside, locally).
   T barycentreResidual(int t, const Vec3<T>& o, Vec3<T>* centre = nullptr) const {
     const std::array<T, 3> third = {T(1) / T(3), T(1) / T(3), T(1) / T(3)};
-    const Vec3<T> c = pointAt(t, third);
-    if (centre) *centre = c;
+    const Vec3<T> c = localPointAt(t, third);
+    if (centre) *centre = toWorld(c);
     const Vec3<T> n = normalAt(t, third);
-    const Vec3<T> x = c - o;
+    const Vec3<T> x = c - toLocal(o);
     if (!(n.dot(x) > T(0))) return std::numeric_limits<T>::infinity();
-    return n.cross(x).stableNorm();
+    return std::ldexp(n.cross(x).stableNorm(), exp_);
   }
 
  private:
-  /// Newton's method for Definition 1 on triangle t from λ = (a, b, 1 − a − b).
+  Vec3<T> toLocal(const Vec3<T>& x) const {
+    Vec3<T> y;
+    for (int k = 0; k < 3; ++k) y[k] = std::ldexp(x[k] - origin_[k], -exp_);
+    return y;
+  }
+  Vec3<T> toWorld(const Vec3<T>& y) const {
+    Vec3<T> x;
+    for (int k = 0; k < 3; ++k) x[k] = origin_[k] + std::ldexp(y[k], exp_);
+    return x;
+  }
+  const Vec3<T>& localCorner(int t, int k) const { return point(triangles_[static_cast<std::size_t>(t)][k]); }
+  Vec3<T> localPointAt(int t, const std::array<T, 3>& lambda) const {
+    return lambda[0] * localCorner(t, 0) + lambda[1] * localCorner(t, 1) + lambda[2] * localCorner(t, 2);
+  }
+
+  /// Newton's method for Definition 1 on triangle t from λ = (a, b, 1 − a − b); o and the
+  /// result in the unit frame.
   PhongHit<T> newton(int t, const Vec3<T>& o, const PhongOptions<T>& options, T a, T b) const {
     PhongHit<T> hit;
-    const Vec3<T>& p3 = corner(t, 2);
-    const Vec3<T> e1 = corner(t, 0) - p3, e2 = corner(t, 1) - p3;
+    const Vec3<T>& p3 = localCorner(t, 2);
+    const Vec3<T> e1 = localCorner(t, 0) - p3, e2 = localCorner(t, 1) - p3;
     const Vec3<T>& n3 = cornerNormal(t, 2);
     const Vec3<T> d1 = cornerNormal(t, 0) - n3, d2 = cornerNormal(t, 1) - n3;
     const Vec3<T>& N = faceNormal(t);
@@ -225,7 +260,7 @@ class PhongSurface {
       }
     }
     hit.lambda = {a, b, T(1) - a - b};
-    hit.point = pointAt(t, hit.lambda);
+    hit.point = localPointAt(t, hit.lambda);
     hit.normal = normalAt(t, hit.lambda);
     const Vec3<T> x = hit.point - o;
     hit.residual = hit.normal.cross(x).stableNorm();
@@ -248,6 +283,8 @@ class PhongSurface {
   std::vector<Vec3<T>> faceNormals_;
   std::vector<std::array<int, 3>> triangles_;
   std::vector<int> order_, merged_;
+  Vec3<T> origin_ = Vec3<T>::Zero();  // the unit frame: x_local = (x − origin_) · 2^-exp_
+  int exp_ = 0;
 };
 
 }  // namespace mink
