@@ -16,32 +16,12 @@
 # Needs (Debian 12): libcgal-dev libgmp-dev libmpfr-dev python3-matplotlib.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-root="$(dirname "$here")"
-build="${MINK_BENCH_BUILD_DIR:-${TMPDIR:-/tmp}/mink-bench-build}"
-results="$here/results"
-for arg in "$@"; do
-  if [ "$arg" = "--quick" ]; then
-    results="${MINK_BENCH_QUICK_DIR:-${TMPDIR:-/tmp}/mink-cpd-quick}"
-  fi
-done
-mkdir -p "$results"
-
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
-  -DMINK_BUILD_TESTS=OFF -DMINK_BUILD_EXAMPLES=OFF -DMINK_BUILD_BENCHMARKS=ON >/dev/null
-cmake --build "$build" --target mink_cpd_bench -j "${JOBS:-2}"
+# shellcheck source=bench_lib.sh
+source "$here/bench_lib.sh"
+bench_setup mink-cpd-quick "$@"
+bench_build mink_cpd_bench
 
 "$build/benchmarks/mink_cpd_bench" "$results/cpd_table2.csv" "$@" | tee "$results/cpd_table2.txt"
 
-py=""
-for candidate in ${PYTHON:-} python3 /usr/bin/python3; do
-  if command -v "$candidate" >/dev/null 2>&1 && "$candidate" -c "import matplotlib" >/dev/null 2>&1; then
-    py="$candidate"
-    break
-  fi
-done
-if [ -z "$py" ]; then
-  echo "no python with matplotlib found (apt-get install python3-matplotlib);" \
-       "the CSV is in $results/cpd_table2.csv" >&2
-  exit 1
-fi
+py="$(bench_python "the CSV is in $results/cpd_table2.csv")"
 "$py" "$here/plot_cpd.py" "$results/cpd_table2.csv" "$results/cpd_table2.png"
