@@ -304,6 +304,32 @@ TEST(ContinuousPenetrationDepth, CoherentAcrossTheMedialAxisWhereEuclideanJumps)
   EXPECT_FALSE(cpd.query(I, pose(M3::Identity(), V(0.6, 0.6, 0.05))).fromPreviousFrame);
 }
 
+TEST(ContinuousPenetrationDepth, ApproximateWithinTheCapsIsAPointOfTheBoundary) {
+  // One ball only, started from the last frame's q = (0, 1.3, 0) on the face y = 1.3 of M
+  // after B has moved to x = 1.2: the face's normals turn towards the edge x = 0.3 inside
+  // that ball and no triangle has a projection, so the answer is the best barycentre
+  // found — still on ∂M.
+  const Mesh A = mesh(mink_test::boxShape()), B = mesh(mink_test::boxShape(V(-0.5, -0.5, -0.5), V(0.5, 0.5, 0.5)));
+  mink::CpdOptions<double> o;
+  o.maxIterations = 1;
+  mink::ContinuousPenetrationDepth<double> cpd(A, B, o);
+  const Pose I = pose(M3::Identity(), V::Zero());
+  const mink::CpdResult<double> first = cpd.query(I, pose(M3::Identity(), V(0.0, 0.2, 0.1)));
+  ASSERT_EQ(first.status, CpdStatus::Penetrating);
+  ASSERT_NEAR((first.point - V(0, 1.3, 0)).norm(), 0, 1e-12);
+  const V t(1.2, 0.2, 0.1);
+  const mink::CpdResult<double> r = cpd.query(I, pose(M3::Identity(), t));
+  EXPECT_TRUE(r.fromPreviousFrame);
+  ASSERT_EQ(r.status, CpdStatus::Approximate);
+  EXPECT_EQ(r.iterations, 1);
+  const V lo = V(-1.5, -1.5, -1.5) - t, hi = V(1.5, 1.5, 1.5) - t;  // M
+  const V q = r.point;
+  EXPECT_TRUE(((q - lo).array() >= -1e-12).all() && ((hi - q).array() >= -1e-12).all());
+  EXPECT_LE(std::min((q - lo).cwiseAbs().minCoeff(), (hi - q).cwiseAbs().minCoeff()), 1e-12);
+  EXPECT_GE(r.depth, 0.3 - 1e-12);
+  EXPECT_NEAR(r.direction.norm(), 1, 1e-12);
+}
+
 TEST(ContinuousPenetrationDepth, TouchingAndApartAreSeparated) {
   const Mesh A = mesh(mink_test::boxShape()), B = mesh(mink_test::boxShape(V(-0.5, -0.5, -0.5), V(0.5, 0.5, 0.5)));
   mink::ContinuousPenetrationDepth<double> cpd(A, B);

@@ -62,6 +62,8 @@ enum class CpdStatus {
   Separated,    ///< the interiors do not overlap (touching included): depth 0
   Penetrating,  ///< overlap, and q satisfies Definition 1 (CPD) / is a local nearest point (PD)
   Approximate,  ///< overlap, but no such q within the caps: q is the best found, on ∂M
+                ///< (if no ball met ∂M at all: the start, within 2^-exitBisectionSteps of
+                ///< the scene's size outside M)
 };
 
 /// The answer of a CPD or PD query. World frame, length unit of the meshes.
