@@ -42,6 +42,11 @@
 //      the same total area (1e-9 relative). update() runs twice, the second time after a
 //      small motion, which exercises ConvexMaps' coherent walk from the last cells
 //      (SphereTree, rebuilt on every call, only the first time).
+//   3. The CPD query (ContinuousPenetrationDepth over both poses, and penetrationDepth) on
+//      scenes of at most 400 triangle pairs, 8 balls: InvalidInput exactly as update();
+//      Separated with depth 0 whenever MeshOverlap finds no common point; otherwise a
+//      finite positive depth, a unit direction, point = depth · direction, and where CPD
+//      says Penetrating, a normal whose line passes through the origin.
 // Three of the open library bugs (fuzz/README.md, inputs in regressions_mesh_open/) are bounded
 // where marked "Open bug" / "Time bound" below; MINK_FUZZ_STRICT=1 lifts the bounds.
 
@@ -715,6 +720,55 @@ bool collapsedPlacement(const Mesh& B, const mink::Pose<double>& a, const mink::
   return size < std::ldexp(offset, -40);
 }
 
+// 3. The CPD query on small scenes (|A| · |B| <= 400 triangle pairs, at most 8 balls):
+//    ContinuousPenetrationDepth coherent over the two poses, and penetrationDepth().
+void checkQueries(const Mesh& A, const Mesh& B, const mink::Pose<double> (&poses)[4]) {
+  mink::CpdOptions<double> opt;
+  opt.maxIterations = 8;
+  mink::ContinuousPenetrationDepth<double> cpd(A, B, opt);
+  for (int step = 0; step < 2; ++step) {
+    gScene.step = step;
+    const mink::Pose<double>& a = poses[2 * step];
+    const mink::Pose<double>& b = poses[2 * step + 1];
+    const int va = poseVerdict(a), vb = poseVerdict(b);
+    for (int mode = 0; mode < 2; ++mode) {
+      const char* who = mode == 0 ? "ContinuousPenetrationDepth::query" : "penetrationDepth";
+      mink::CpdResult<double> r;
+      bool threw = false;
+      std::string why;
+      try {
+        r = mode == 0 ? cpd.query(a, b) : mink::penetrationDepth(A, a, B, b, opt);
+      } catch (const mink::InvalidInput& e) {
+        threw = true;
+        why = e.what();
+      } catch (const std::exception& e) {
+        fail(std::string(who) + " threw something other than InvalidInput: " + e.what());
+      }
+      if (threw && va > 0 && vb > 0) fail(std::string(who) + " rejected rigid poses: " + why);
+      if (!threw && (va < 0 || vb < 0)) fail(std::string(who) + " accepted a pose that is not rigid");
+      if (threw) continue;
+      bool overlap = true;
+      try {
+        overlap = mink::MeshOverlap<double>(A, a, B, b).overlaps();
+      } catch (const mink::InvalidInput&) {
+        continue;  // a pose in the band where either verdict is allowed
+      }
+      if (r.status == mink::CpdStatus::Separated) {
+        if (r.depth != 0) fail(std::string(who) + ": Separated with a non-zero depth");
+        continue;
+      }
+      if (!overlap) fail(std::string(who) + " reports an overlap of meshes that share no point");
+      if (!std::isfinite(r.depth) || !(r.depth > 0) || !r.point.allFinite() || !r.normal.allFinite())
+        fail(std::string(who) + ": an overlap answered with a zero or non-finite depth, point or normal");
+      if (std::fabs(r.direction.norm() - 1) > 1e-9) fail(std::string(who) + ": the direction is not unit");
+      if ((r.point - r.depth * r.direction).norm() > 1e-9 * r.depth)
+        fail(std::string(who) + ": point is not depth * direction");
+      if (mode == 0 && r.status == mink::CpdStatus::Penetrating && r.normal.cross(r.point).norm() > 1e-6 * r.depth)
+        fail("ContinuousPenetrationDepth::query: Penetrating, but the normal at q misses the origin");
+    }
+  }
+}
+
 void checkUpdates(const Mesh& A, const Mesh& B, Decoder& in, int unitExp) {
   const mink::Pose<double> pA = decodePose(in, unitExp, false), pB = decodePose(in, unitExp, true);
   const mink::Pose<double> pA2 = moved(pA, in, unitExp), pB2 = moved(pB, in, unitExp);
@@ -858,6 +912,10 @@ void checkUpdates(const Mesh& A, const Mesh& B, Decoder& in, int unitExp) {
         fail("methods return different areas: " + pair + buf);
       }
     }
+  }
+  if (A.numTriangles() * B.numTriangles() <= 400) {
+    const mink::Pose<double> poses[4] = {pA, pB, pA2, pB2};
+    checkQueries(A, B, poses);
   }
 }
 
