@@ -46,7 +46,8 @@
 //      scenes of at most 400 triangle pairs, 8 balls: InvalidInput exactly as update();
 //      Separated with depth 0 whenever MeshOverlap finds no common point; otherwise a
 //      finite positive depth, a unit direction, point = depth · direction, and where CPD
-//      says Penetrating, a normal whose line passes through the origin.
+//      says Penetrating, a normal whose line passes through the origin (1e-6 of the depth
+//      plus (1e-12 + 4e)·L: the rounding of a scene of size L, poses e off orthonormal).
 // Three of the open library bugs (fuzz/README.md, inputs in regressions_mesh_open/) are bounded
 // where marked "Open bug" / "Time bound" below; MINK_FUZZ_STRICT=1 lifts the bounds.
 
@@ -746,6 +747,10 @@ void checkQueries(const Mesh& A, const Mesh& B, const mink::Pose<double> (&poses
       }
       if (threw && va > 0 && vb > 0) fail(std::string(who) + " rejected rigid poses: " + why);
       if (!threw && (va < 0 || vb < 0)) fail(std::string(who) + " accepted a pose that is not rigid");
+      if (gVerbose && !threw)
+        std::fprintf(stderr, "%s %d: status %d depth %.17g point %.17g %.17g %.17g normal %.17g %.17g %.17g residual %.3g, %d balls\n",
+                     who, step + 1, static_cast<int>(r.status), r.depth, r.point.x(), r.point.y(), r.point.z(), r.normal.x(),
+                     r.normal.y(), r.normal.z(), r.residual, r.iterations);
       if (threw) continue;
       bool overlap = true;
       try {
@@ -763,7 +768,16 @@ void checkQueries(const Mesh& A, const Mesh& B, const mink::Pose<double> (&poses
       if (std::fabs(r.direction.norm() - 1) > 1e-9) fail(std::string(who) + ": the direction is not unit");
       if ((r.point - r.depth * r.direction).norm() > 1e-9 * r.depth)
         fail(std::string(who) + ": point is not depth * direction");
-      if (mode == 0 && r.status == mink::CpdStatus::Penetrating && r.normal.cross(r.point).norm() > 1e-6 * r.depth)
+      // Definition 1 holds to the rounding of the scene, not of the depth: two boxes at
+      // 2^200 overlapping by 1e28 (below their coordinates' rounding, 1e44) have a depth
+      // that is all rounding.
+      double L = 0;
+      for (const Mesh* X : {&A, &B})
+        for (const V& v : X->vertices()) L = std::max(L, v.cwiseAbs().maxCoeff());
+      L += std::max(a.translation.cwiseAbs().maxCoeff(), b.translation.cwiseAbs().maxCoeff());
+      const double e = static_cast<double>(orthoError(a.rotation) + orthoError(b.rotation));
+      if (mode == 0 && r.status == mink::CpdStatus::Penetrating &&
+          r.normal.cross(r.point).norm() > 1e-6 * r.depth + (1e-12 + 4 * e) * L)
         fail("ContinuousPenetrationDepth::query: Penetrating, but the normal at q misses the origin");
     }
   }

@@ -8,9 +8,11 @@
 //   1. Separated (depth 0) when A and B share no point (mesh/mesh_overlap.hpp), or when
 //      they only touch: o lies on ∂M.
 //   2. Start q0: the previous frame's q when it still has ∂M around it (coherence), else
-//      the shortest first exit of o from M along a few directions (±x, ±y, ±z and the
-//      line between the shapes' centres), each found by bisection on the overlap test
-//      (mink's stand-in for the paper's PolyDepth: any point of ∂M will do to seed).
+//      the shortest first exit of o from M along 27 directions (the line between the
+//      shapes' centres, and to a cube's faces, edges and corners), each found on the
+//      overlap test: the first free
+//      point of a ladder 2^-16 .. 1 of the far end, then bisection (mink's stand-in for
+//      the paper's PolyDepth: any point of ∂M will do to seed, a near one saves balls).
 //   3. Algorithm 2: the patch of ∂M in the ball S(q_i, r), r = alpha |q_i|
 //      (cpd/local_minkowski_sum.hpp); Phong projection of o onto every triangle
 //      (cpd/phong_projection.hpp); the nearest projection inside the ball is the answer —
@@ -77,6 +79,7 @@ struct CpdResult {
                                          ///< direction for PD; parallel to direction when Penetrating
   ConvolutionPair pair;                  ///< the convolution facet q lies on: its features of A and B
   T residual = T(0);                     ///< |normal × q|: how far o is from the normal line at q
+                                         ///< (Penetrating: the rounding of the scene, ~eps · its size)
   int iterations = 0;                    ///< balls built (patches computed)
   T radius = T(0);                       ///< the last ball's radius
   long long trianglesBuilt = 0;          ///< patch triangles over all balls
@@ -205,6 +208,8 @@ class PenetrationSearch {
     hasLast_ = res.depth > T(0);
   }
 
+  static constexpr int kExitLadder = 16;  // halvings of the far end tried before the bisection
+
   /// alpha |q|, but positive (the patch needs a ball).
   T radiusAround(const Vec3<T>& q) const {
     return std::max(options_.alpha * q.stableNorm(), std::numeric_limits<T>::min());
@@ -214,18 +219,36 @@ class PenetrationSearch {
   /// each, bisection between 0 (B overlaps A) and a translation that clears the shapes'
   /// bounding spheres; the end that does not overlap is returned.
   Vec3<T> firstExit(const Vec3<T>& between, const T& reach) {
-    std::array<Vec3<T>, 7> dirs = {Vec3<T>::UnitX(), Vec3<T>(-Vec3<T>::UnitX()), Vec3<T>::UnitY(),
-                                   Vec3<T>(-Vec3<T>::UnitY()), Vec3<T>::UnitZ(), Vec3<T>(-Vec3<T>::UnitZ()),
-                                   Vec3<T>::UnitX()};
-    int n = 6;
+    // The line between the centres first (often the shortest), then the 26 directions
+    // to the faces, edges and corners of a cube: ±x, ±y, ±z alone miss the free cavity of
+    // two linked tori, whose nearest exits lie between the axes.
+    std::array<Vec3<T>, 27> dirs;
+    int n = 0;
     const T len = between.stableNorm();
     if (len > T(0) && std::isfinite(len)) dirs[static_cast<std::size_t>(n++)] = between / len;
+    for (int i = -1; i <= 1; ++i)
+      for (int j = -1; j <= 1; ++j)
+        for (int k = -1; k <= 1; ++k)
+          if (i || j || k) dirs[static_cast<std::size_t>(n++)] = Vec3<T>(T(i), T(j), T(k)).normalized();
     T bestT = std::numeric_limits<T>::infinity();
     Vec3<T> best = Vec3<T>::Zero();
     for (int k = 0; k < n; ++k) {
       const Vec3<T> dA = RA_.transpose() * dirs[static_cast<std::size_t>(k)];  // in A's frame
       T lo = T(0), hi = std::min(bestT, reach * T(1.0625));
       if (overlap_.overlaps(Vec3<T>(hi * dA))) continue;  // no shorter than the best so far
+      // The first exit, not just any: M is not convex along the ray (a linked pair of
+      // tori leaves a free cavity near o inside an overlapping shell), so the free end
+      // is first brought down by halves, from 2^-16 of it up, before the bisection.
+      for (int h = kExitLadder; h >= 1; --h) {
+        const T t = std::ldexp(hi, -h);
+        if (!(t > lo)) continue;
+        if (overlap_.overlaps(Vec3<T>(t * dA))) {
+          lo = t;
+        } else {
+          hi = t;
+          break;
+        }
+      }
       for (int s = 0; s < options_.exitBisectionSteps; ++s) {
         const T mid = (lo + hi) / T(2);
         if (!(mid > lo && mid < hi)) break;
