@@ -4,7 +4,8 @@
 // paper's numbers, plus a degenerate family (coplanar facets everywhere) beside its
 // generic twins.
 //
-// Scenes (A fixed at the identity, B moving; procedural shapes: tests/support/mesh_shapes.hpp,
+// Scenes (A fixed at the identity, B moving; the four paper scenes in cpd_paper_scenes.hpp,
+// shared with mink_cpd_query_bench; procedural shapes: tests/support/mesh_shapes.hpp,
 // the duck: tests/data/duck.obj, Bullet's zlib-licensed mesh, standing in for the paper's fish):
 //   cone/axes     axes (60 triangles; paper 36) and a cone of 1000 triangles, apex down in
 //                 an arm; the cone slides along the arm while turning.
@@ -69,9 +70,9 @@
 #include <Eigen/Geometry>
 
 #include "bench_common.hpp"
+#include "cpd_paper_scenes.hpp"
 #include "mink/cpd/local_minkowski_sum.hpp"
 #include "mink/cpd/minkowski_boundary.hpp"
-#include "mink/io/triangle_mesh_io.hpp"
 #include "mink/mesh/detail/enclosing_sphere.hpp"
 #include "mink/mesh/mesh_overlap.hpp"
 #include "support/mesh_shapes.hpp"
@@ -96,15 +97,6 @@ M3 rot(double angle, const V& axis) { return Eigen::AngleAxisd(angle, axis.norma
 using mink_bench::wallMs;
 double cpuMs() { return mink_bench::threadCpuMs(); }
 
-MeshShape fromObj(const std::string& file) {
-  const Mesh m = mink::io::readTriangleMesh<double>(std::string(MINK_BENCH_DATA_DIR) + "/" + file);
-  MeshShape s;
-  s.name = file;
-  s.vertices = m.vertices();
-  for (int t = 0; t < m.numTriangles(); ++t) s.triangles.push_back(m.triangle(t));
-  return s;
-}
-
 MeshShape scaled(MeshShape s, double k) {
   for (auto& v : s.vertices) v *= k;
   return s;
@@ -112,121 +104,12 @@ MeshShape scaled(MeshShape s, double k) {
 
 Mesh toMesh(const MeshShape& s) { return Mesh::fromMesh(s.verticesAs<double>(), s.triangles); }
 
-struct Scene {
-  std::string name;
-  bool degenerate = false;
-  MeshShape a, b;       // unit scale
-  M3 R0 = M3::Identity();
-  V aim = V::Zero();    // B's translation at which it surely overlaps A (auto placement)
-  V approach = V::Zero();  // unit: B's way in (placement) and, reversed, out (the ball's centre)
-  bool search = true;   // false: t0 = aim, no placement search
-  double reach = 0;     // the search starts at aim − reach·approach (0: far away)
-  double push = 0;      // depth pushed in past the touching contact (unit scale)
-  // B's pose at frame f from the start pose (R0, t0), unit scale.
-  std::function<Pose(int f, const M3& R0, const V& t0)> motion;
-  double paper[4] = {NAN, NAN, NAN, NAN};  // Full, Brute F., BSH, Gap Fill. (ms)
-  bool cgal = false;    // try CGAL minkowski_sum_3 at frame 0
-};
-
-/// Start translation: from aim − D·approach (separated) along `approach` to the first
-/// touching contact (bisection on MeshOverlap), then `push` further.
-V placeB(const Scene& s) {
-  if (!s.search) return s.aim;
-  const Mesh A = toMesh(s.a), B = toMesh(s.b);
-  const double D = s.reach > 0 ? s.reach : 4 * (A.extent() + B.extent()) + 4;
-  const V start = s.aim - D * s.approach;
-  mink::MeshOverlap<double> ov(A, B, s.R0, start);
-  if (ov.overlaps(V::Zero()) || !ov.overlaps(D * s.approach)) {
-    std::printf("scene %s: placement search needs a separated start and an overlapping aim\n", s.name.c_str());
-    std::exit(2);
-  }
-  double lo = 0, hi = D;
-  for (int i = 0; i < 60; ++i) {
-    const double m = 0.5 * (lo + hi);
-    (ov.overlaps(m * s.approach) ? hi : lo) = m;
-  }
-  return start + (hi + s.push) * s.approach;
-}
+using Scene = mink_bench::CpdScene;
+using mink_bench::placeB;
 
 std::vector<Scene> scenes(bool quick) {
   (void)quick;
-  std::vector<Scene> out;
-  {
-    Scene s;
-    s.name = "cone/axes";
-    s.a = mink_test::axes(3);
-    s.b = mink_test::cone(500, 1.0, 2.0);
-    s.R0 = rot(kPi, V(1, 0, 0));  // apex down
-    s.aim = V(2, 0, 1.5);
-    s.approach = V(0, 0, -1);
-    s.push = 0.3;
-    s.motion = [](int f, const M3& R0, const V& t0) {
-      Pose p;
-      p.rotation = rot(0.01 * f, V(0.2, 0.3, 1)) * R0;
-      p.translation = t0 + f * V(-0.03, 0, 0);
-      return p;
-    };
-    s.paper[0] = 58.91, s.paper[1] = 16.10, s.paper[2] = 24.23, s.paper[3] = 10.33;
-    s.cgal = true;
-    out.push_back(s);
-  }
-  {
-    Scene s;
-    s.name = "spoon/cup";
-    s.a = mink_test::cup(128, 6.0, 5.4, 10.0, 0.6);
-    s.b = mink_test::spoon(54, 5);
-    s.R0 = rot(-kPi / 3, V(0, 1, 0));  // handle up, leaning
-    s.aim = V(4.5, 0, 4.5);
-    s.approach = V(1, 0, 0);
-    s.reach = 4.5;  // from the cup's axis towards its wall
-    s.push = 0.15;
-    s.motion = [](int f, const M3& R0, const V& t0) {
-      Pose p;
-      p.rotation = R0 * rot(0.012 * f, V(1, 0, 0));  // about the spoon's long axis
-      p.translation = t0;
-      return p;
-    };
-    s.paper[0] = 1393.61, s.paper[1] = 453.29, s.paper[2] = 69.38, s.paper[3] = 13.91;
-    out.push_back(s);
-  }
-  {
-    Scene s;
-    s.name = "duck/torus";
-    s.a = mink_test::torus(40, 20, 0.7, 0.3);
-    s.b = fromObj("duck.obj");
-    s.R0 = rot(kPi / 2, V(1, 0, 0));  // the duck's up (y) along z
-    s.aim = V(0.13, 0.03, -0.9);
-    s.approach = V(0, 0, -1);
-    s.push = 0.05;
-    s.motion = [](int f, const M3& R0, const V& t0) {
-      Pose p;
-      p.rotation = rot(0.02 * f, V(0, 0, 1)) * R0;
-      p.translation = t0;
-      return p;
-    };
-    s.paper[0] = 1719.12, s.paper[1] = 584.39, s.paper[2] = 185.82, s.paper[3] = 28.80;
-    out.push_back(s);
-  }
-  {
-    Scene s;
-    s.name = "torus/torus";
-    s.a = mink_test::torus(50, 20, 2.0, 0.75);
-    s.b = mink_test::torus(50, 20, 2.0, 0.75);
-    s.R0 = rot(kPi / 2, V(1, 0, 0));  // B's ring in the xz plane, through A's hole
-    s.aim = V(1, 0, 0);
-    s.approach = V(-1, 0, 0);
-    s.reach = 1;  // from (2, 0, 0), linked and clear, towards A's inner wall
-    s.push = 0.1;
-    s.motion = [](int f, const M3& R0, const V& t0) {
-      Pose p;
-      const M3 Q = rot(0.02 * f, V(0, 0, 1));  // about A's axis: B travels round A's hole
-      p.rotation = Q * R0;
-      p.translation = Q * t0;
-      return p;
-    };
-    s.paper[0] = 2842.93, s.paper[1] = 1158.74, s.paper[2] = 390.65, s.paper[3] = 36.06;
-    out.push_back(s);
-  }
+  std::vector<Scene> out = mink_bench::cpdPaperScenes();
   // The degenerate family: B = the box [-1/2, 1/2]^3 resting on A's top face (z = 1),
   // sliding along x; the twin turns B by a small generic rotation about its centre.
   auto slide = [](double dx) {

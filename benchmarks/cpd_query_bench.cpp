@@ -28,6 +28,13 @@
 //                    Phong projections are many and close (Theorem 3 asks for o near ∂M).
 //   L-block/box turning  A = L-block, B = [±0.45, ±0.2, ±0.75], turning by 1.2 u rad
 //                    (69°) about (0.2, 0.3, 1) after G, along the L-block/box path.
+//   The CPD paper's section 7 (Table 1 times the query on these; cpd_paper_scenes.hpp, shared
+//   with mink_cpd_bench, states the meshes, B's start pose and the motions), unit scale,
+//   --paper-frames frames of the paper's per-frame steps:
+//   cone/axes        the cone (1000 triangles) sliding along an arm of the axes while turning;
+//   spoon/cup        the spoon (1316) turning about its long axis, leaning on the cup's wall;
+//   duck/torus       the duck (4212; the paper's fish) turning in the hole of a torus (1600);
+//   torus/torus      a torus (2000) travelling round the hole of the interlocked other.
 // Per scene, three queries per frame, each timed alone:
 //   cpd     one ContinuousPenetrationDepth along the motion (coherent: each query starts
 //           from the last frame's q, section 6.2);
@@ -35,6 +42,12 @@
 //           maps are kept; only the start is forgotten);
 //   pd      penetrationDepth(), the free function: it builds its search (convex maps and
 //           overlap scratch) on every call, and that is in its time.
+// And FCL's mesh–mesh contact (what users have today), in its own child on the same frames:
+//   fcl     fcl::collide on BVHModel<OBBRSSd> (tests/support/fcl_mesh.hpp), enable_contact,
+//           num_max_contacts 1e6; the largest contact penetration_depth and its normal
+//           (FCL's depth is that of a triangle pair, not a translation that separates the
+//           meshes), the contact count, the time of setTransform + collide. Compiled out
+//           (MINK_BENCH_HAVE_FCL unset) when CMake finds no FCL.
 // Figures per frame: status; depth; the turn of the direction since the previous frame
 // (degrees, when both frames overlap); depth ratio cpd / pd and fresh / pd; iterations
 // (balls built) and patch triangles built. Check: every answer that is not Separated
@@ -44,13 +57,18 @@
 // the CSV. Medians and maxima over the frames. Each scene runs in a child process stopped
 // after a wall-time limit; the frames that finished are kept.
 //
-// Usage: mink_cpd_query_bench [out.csv] [--quick] [--frames N] [--scene-timeout S] [--only SCENE]
+// Usage: mink_cpd_query_bench [out.csv] [--quick] [--frames N] [--paper-frames N]
+//                             [--scene-timeout S] [--only SCENE]
 //   out.csv           default benchmarks/results/cpd_query.csv (directory must exist); the
 //                     per-frame rows go beside it, to <out>_frames.csv
 //   --frames          frames per motion (default 60)
+//   --paper-frames    frames of the paper's motions (default 20, the paper's steps per frame)
 //   --scene-timeout   wall-time limit of a scene's child, seconds (default 90)
 //   --only            run one scene (its name as printed, e.g. "torus/box")
-//   --quick           12 frames, 20 s limits (smoke test, numbers not for publication)
+//   --quick           12 frames (paper scenes 4), 20 s limits (smoke test, numbers not for
+//                     publication)
+// The summary closes with Table 1: the coherent query's median beside the paper's time per
+// frame (its Table 1 totals) and a quarter of it, the target of issue 15.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -65,9 +83,13 @@
 #include <Eigen/Geometry>
 
 #include "bench_common.hpp"
+#include "cpd_paper_scenes.hpp"
 #include "mink/cpd/continuous_penetration_depth.hpp"
 #include "mink/mesh/mesh_overlap.hpp"
 #include "support/mesh_shapes.hpp"
+#ifdef MINK_BENCH_HAVE_FCL
+#include "support/fcl_mesh.hpp"
+#endif
 
 namespace {
 
@@ -96,6 +118,9 @@ struct Scene {
   bool degenerate = false;
   MeshShape a, b;
   std::function<Pose(double u)> motion;  // B's pose, u in [0, 1]
+  bool paper = false;                    // a scene of the paper: B's pose per frame below
+  std::function<Pose(int f)> step;       // B's pose at frame f (paper scenes)
+  double paperMs = NAN;                  // the paper's Table 1 time per frame
 };
 
 std::vector<Scene> scenes() {
@@ -154,6 +179,17 @@ std::vector<Scene> scenes() {
     s.motion = [G](double u) { return pose(rot(1.2 * u, V(0.2, 0.3, 1)) * G, V(1.4 - u, 0.4 + u, 0.5)); };
     out.push_back(s);
   }
+  for (const mink_bench::CpdScene& p : mink_bench::cpdPaperScenes()) {
+    Scene s;
+    s.name = p.name;
+    s.a = p.a;
+    s.b = p.b;
+    s.paper = true;
+    s.paperMs = p.paperQueryMs;
+    const V t0 = mink_bench::placeB(p);
+    s.step = [p, t0](int f) { return p.motion(f, p.R0, t0); };
+    out.push_back(s);
+  }
   return out;
 }
 
@@ -169,8 +205,13 @@ struct Answer {
 
 /// One frame: the three queries.
 struct FrameRecord {
-  double frame;
+  double frame, setupMs;  // setupMs: building the coherent query's object (frame 0's record)
   Answer q[kMethods];
+};
+
+/// One frame of FCL's contact query.
+struct FclRecord {
+  double frame, collided, contacts, depth, nx, ny, nz, cpu, wall;
 };
 
 Answer answer(const mink::CpdResult<double>& r, double cpu, double wall) {
@@ -213,7 +254,7 @@ std::string fmt(const char* f, double x) {
 int main(int argc, char** argv) {
   std::string out = "benchmarks/results/cpd_query.csv";
   bool quick = false;
-  int frames = 60;
+  int frames = 60, paperFrames = 20;
   double sceneTimeout = 90;
   std::string only;
   for (int i = 1; i < argc; ++i) {
@@ -223,6 +264,8 @@ int main(int argc, char** argv) {
       only = argv[++i];
     else if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc)
       frames = std::atoi(argv[++i]);
+    else if (std::strcmp(argv[i], "--paper-frames") == 0 && i + 1 < argc)
+      paperFrames = std::atoi(argv[++i]);
     else if (std::strcmp(argv[i], "--scene-timeout") == 0 && i + 1 < argc)
       sceneTimeout = std::atof(argv[++i]);
     else
@@ -230,9 +273,11 @@ int main(int argc, char** argv) {
   }
   if (quick) {
     frames = std::min(frames, 12);
+    paperFrames = std::min(paperFrames, 4);
     sceneTimeout = std::min(sceneTimeout, 20.0);
   }
   frames = std::max(frames, 2);
+  paperFrames = std::max(paperFrames, 2);
   const std::string framesOut =
       (out.size() > 4 && out.compare(out.size() - 4, 4, ".csv") == 0 ? out.substr(0, out.size() - 4) : out) +
       "_frames.csv";
@@ -241,10 +286,16 @@ int main(int argc, char** argv) {
   const double runStart = mink_bench::wallMs();
   std::printf("mink_cpd_query_bench: the CPD query along motions beside the Euclidean PD, double\n");
   std::printf("machine: %s; load average %s\n", mink_bench::machineLine().c_str(), mink_bench::loadAverage().c_str());
-  std::printf("%d frames per scene; thread CPU time per query; scene time limit %.0f s (wall, child process)%s\n",
-              frames, sceneTimeout, quick ? "; --quick: not for publication" : "");
+  std::printf("%d frames per scene (the paper's scenes %d); thread CPU time per query; scene time limit %.0f s "
+              "(wall, child process; FCL in a second child with the same limit)%s\n",
+              frames, paperFrames, sceneTimeout, quick ? "; --quick: not for publication" : "");
   std::printf("cpd: one ContinuousPenetrationDepth along the motion; fresh: reset() before each query; "
-              "pd: penetrationDepth() (builds its search per call)\n\n");
+              "pd: penetrationDepth() (builds its search per call)\n");
+#ifdef MINK_BENCH_HAVE_FCL
+  std::printf("fcl: fcl::collide on BVHModel<OBBRSSd>, enable_contact, the largest contact penetration_depth\n\n");
+#else
+  std::printf("fcl: not built (CMake found no FCL)\n\n");
+#endif
 
   struct Row {
     std::string scene;
@@ -253,6 +304,11 @@ int main(int argc, char** argv) {
     double setupMs;
     MethodSummary m[kMethods];
     std::string note;
+    bool paper;
+    double paperMs;
+    int fclDone, fclCollided;
+    std::vector<double> fclContacts, fclDepth, fclTurn, fclCpu;
+    std::string fclNote;
   };
   std::vector<Row> rows;
   std::ofstream fcsv(framesOut);
@@ -261,33 +317,32 @@ int main(int argc, char** argv) {
           "iterations,triangles_built,from_previous_frame,on_boundary\n";
   int warnings = 0;
 
+  const int framesAll = frames;
   for (const Scene& sc : scenes()) {
     if (!only.empty() && sc.name != only) continue;
     const double sceneStart = mink_bench::wallMs();
     const Mesh A = toMesh(sc.a), B = toMesh(sc.b);
     const Pose poseA;
+    const int frames = sc.paper ? paperFrames : framesAll;
     std::vector<Pose> poses;
-    for (int f = 0; f < frames; ++f) poses.push_back(sc.motion(double(f) / (frames - 1)));
-
-    // The setup of a ContinuousPenetrationDepth (convex maps, overlap scratch), apart.
-    double setupMs = NAN;
-    {
-      const double c0 = mink_bench::threadCpuMs();
-      mink::ContinuousPenetrationDepth<double> probe(A, B);
-      setupMs = mink_bench::threadCpuMs() - c0;
-    }
+    for (int f = 0; f < frames; ++f) poses.push_back(sc.paper ? sc.step(f) : sc.motion(double(f) / (frames - 1)));
 
     bool finished = false;
     double childCpu = 0;
     const std::vector<FrameRecord> recs = mink_bench::inChild<FrameRecord>(
         sceneTimeout,
         [&](const std::function<void(const FrameRecord&)>& emit) {
-          mink::ContinuousPenetrationDepth<double> cpd(A, B), fresh(A, B);
+          // The setup of a ContinuousPenetrationDepth (convex maps, overlap scratch), apart.
+          const double s0 = mink_bench::threadCpuMs();
+          mink::ContinuousPenetrationDepth<double> cpd(A, B);
+          const double setupMs = mink_bench::threadCpuMs() - s0;
+          mink::ContinuousPenetrationDepth<double> fresh(A, B);
           mink::MeshOverlap<double> ov(A, B, M3::Identity(), V::Zero());
           for (int f = 0; f < frames; ++f) {
             const Pose& pb = poses[static_cast<std::size_t>(f)];
             FrameRecord rec{};
             rec.frame = f;
+            rec.setupMs = setupMs;
             mink::CpdResult<double> r[kMethods];
             for (int m = 0; m < kMethods; ++m) {
               if (m == 1) fresh.reset();  // untimed: it only clears a flag
@@ -303,13 +358,89 @@ int main(int argc, char** argv) {
         },
         finished, &childCpu);
 
-    Row row{sc.name, sc.degenerate, A.numTriangles(), B.numTriangles(), frames, static_cast<int>(recs.size()), setupMs,
-            {}, ""};
+    Row row{sc.name, sc.degenerate, A.numTriangles(), B.numTriangles(), frames, static_cast<int>(recs.size()),
+            recs.empty() ? NAN : recs[0].setupMs, {}, "", sc.paper, sc.paperMs, 0, 0, {}, {}, {}, {}, ""};
     if (!finished) {
-      char b[128];
-      std::snprintf(b, sizeof b, "stopped after %.0f s: %zu of %d frames (child CPU %.0f ms)", sceneTimeout, recs.size(),
-                    frames, childCpu);
+      char b[160];
+      std::snprintf(b, sizeof b, "stopped after %zu frames, limit %.0f s (of %d; child CPU %.0f ms)", recs.size(),
+                    sceneTimeout, frames, childCpu);
       row.note = b;
+    }
+
+    // FCL's contact on the same frames, in its own child.
+    bool fclFinished = false;
+    double fclChildCpu = 0;
+#ifdef MINK_BENCH_HAVE_FCL
+    const std::vector<FclRecord> frecs = mink_bench::inChild<FclRecord>(
+        sceneTimeout,
+        [&](const std::function<void(const FclRecord&)>& emit) {
+          fcl::CollisionObjectd oa(mink_test::fclModel(A), fcl::Transform3d::Identity());
+          fcl::CollisionObjectd ob(mink_test::fclModel(B), fcl::Transform3d::Identity());
+          oa.computeAABB();
+          for (int f = 0; f < frames; ++f) {
+            const Pose& pb = poses[static_cast<std::size_t>(f)];
+            const double c0 = mink_bench::threadCpuMs(), w0 = mink_bench::wallMs();
+            fcl::Transform3d tf = fcl::Transform3d::Identity();
+            tf.linear() = pb.rotation;
+            tf.translation() = pb.translation;
+            ob.setTransform(tf);
+            ob.computeAABB();
+            fcl::CollisionRequestd request(1000000, true);
+            fcl::CollisionResultd result;
+            fcl::collide(&oa, &ob, request, result);
+            FclRecord r{};
+            r.frame = f;
+            r.collided = result.isCollision() ? 1 : 0;
+            r.contacts = static_cast<double>(result.numContacts());
+            r.depth = NAN;
+            for (std::size_t i = 0; i < result.numContacts(); ++i) {
+              const fcl::Contactd& c = result.getContact(i);
+              if (std::isnan(r.depth) || c.penetration_depth > r.depth) {
+                r.depth = c.penetration_depth;
+                r.nx = c.normal.x(), r.ny = c.normal.y(), r.nz = c.normal.z();
+              }
+            }
+            r.cpu = mink_bench::threadCpuMs() - c0;
+            r.wall = mink_bench::wallMs() - w0;
+            emit(r);
+          }
+        },
+        fclFinished, &fclChildCpu);
+#else
+    const std::vector<FclRecord> frecs;
+#endif
+    row.fclDone = static_cast<int>(frecs.size());
+#ifdef MINK_BENCH_HAVE_FCL
+    if (!fclFinished) {
+      char b[160];
+      std::snprintf(b, sizeof b, "fcl stopped after %zu frames, limit %.0f s (child CPU %.0f ms)", frecs.size(),
+                    sceneTimeout, fclChildCpu);
+      row.fclNote = b;
+    }
+#endif
+    {
+      V last = V::Zero();
+      bool lastValid = false;
+      for (const FclRecord& r : frecs) {
+        row.fclCollided += r.collided != 0;
+        row.fclContacts.push_back(r.contacts);
+        row.fclCpu.push_back(r.cpu);
+        const V n(r.nx, r.ny, r.nz);
+        double turn = NAN;
+        const bool valid = r.collided != 0 && !std::isnan(r.depth);
+        if (valid) {
+          row.fclDepth.push_back(r.depth);
+          if (lastValid) {
+            turn = std::acos(std::clamp(n.dot(last), -1.0, 1.0)) * 180 / kPi;
+            row.fclTurn.push_back(turn);
+          }
+        }
+        lastValid = valid;
+        last = n;
+        fcsv << '"' << sc.name << "\"," << r.frame << ',' << r.frame / (frames - 1) << ",fcl,"
+             << (valid ? "Penetrating" : "Separated") << ',' << r.depth << ',' << r.nx << ',' << r.ny << ',' << r.nz
+             << ',' << turn << ",,," << r.cpu << ',' << r.wall << ",," << r.contacts << ",0,\n";
+      }
     }
     std::array<V, kMethods> lastDir;
     std::array<bool, kMethods> lastValid{};
@@ -358,8 +489,9 @@ int main(int argc, char** argv) {
     rows.push_back(row);
 
     std::printf("== %s%s: %d / %d triangles, %d of %d frames, setup %.3f ms, %.1f s wall%s%s\n", sc.name.c_str(),
-                sc.degenerate ? " [degenerate]" : "", row.triA, row.triB, row.done, frames, setupMs,
+                sc.degenerate ? " [degenerate]" : "", row.triA, row.triB, row.done, frames, row.setupMs,
                 (mink_bench::wallMs() - sceneStart) * 1e-3, row.note.empty() ? "" : "; ", row.note.c_str());
+    if (!row.note.empty()) std::printf("   %s: %s\n", sc.name.c_str(), row.note.c_str());
     std::printf("   %-6s %5s %5s %5s %5s  %9s %9s  %9s %9s  %9s %9s  %9s %9s %9s  %6s %9s\n", "method", "Pen", "Appr",
                 "Sep", "prev", "turn med", "turn max", "ratio med", "ratio max", "depth med", "depth max", "ms med",
                 "ms q3", "ms max", "iters", "triangles");
@@ -370,6 +502,14 @@ int main(int argc, char** argv) {
                   maxOf(s.turn), med(s.ratio), maxOf(s.ratio), med(s.depth), maxOf(s.depth), med(s.cpu),
                   mink_bench::quantile(s.cpu, 0.75), maxOf(s.cpu), med(s.iterations), med(s.triangles));
     }
+#ifdef MINK_BENCH_HAVE_FCL
+    std::printf("   %-6s %5d %5s %5d %5s  %9.3f %9.3f  %9s %9s  %9.4f %9.4f  %9.3f %9.3f %9.3f  contacts med %.0f, max %.0f"
+                "%s%s\n",
+                "fcl", row.fclCollided, "", row.fclDone - row.fclCollided, "", med(row.fclTurn), maxOf(row.fclTurn), "",
+                "", med(row.fclDepth), maxOf(row.fclDepth), med(row.fclCpu), mink_bench::quantile(row.fclCpu, 0.75),
+                maxOf(row.fclCpu), med(row.fclContacts), maxOf(row.fclContacts), row.fclNote.empty() ? "" : "; ",
+                row.fclNote.c_str());
+#endif
     std::printf("\n");
   }
 
@@ -377,18 +517,45 @@ int main(int argc, char** argv) {
   std::printf("Summary (turn: degrees between consecutive frames' directions; ratio: depth / PD depth; "
               "ms: thread CPU per query, median / max; P/A/S: Penetrating / Approximate / Separated frames):\n\n");
   std::printf("| scene | frames | CPD P/A/S | PD P/A/S | CPD turn med / max | PD turn med / max | CPD / PD depth med / max "
-              "| CPD ms med / max | fresh ms med / max | PD ms med / max | CPD iterations | CPD triangles |\n");
-  std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+              "| CPD ms med / max | fresh ms med / max | PD ms med / max | CPD iterations | CPD triangles "
+              "| CPD depth med | FCL depth med / max | FCL turn med / max | FCL ms med / max |\n");
+  std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: "
+              "| ---: |\n");
   for (const Row& r : rows) {
     const MethodSummary &c = r.m[0], &fr = r.m[1], &p = r.m[2];
-    std::printf("| %s%s | %d | %d/%d/%d | %d/%d/%d | %s / %s | %s / %s | %s / %s | %s / %s | %s / %s | %s / %s | %s | %s |\n",
-                r.scene.c_str(), r.degenerate ? " (degenerate)" : "", r.done, c.penetrating, c.approximate, c.separated,
+    std::string doneCell = std::to_string(r.done);
+    if (r.done < r.frames) doneCell += " of " + std::to_string(r.frames) + " (stopped)";
+    std::printf("| %s%s | %s | %d/%d/%d | %d/%d/%d | %s / %s | %s / %s | %s / %s | %s / %s | %s / %s | %s / %s | %s | %s "
+                "| %s | %s / %s | %s / %s | %s / %s |\n",
+                r.scene.c_str(), r.degenerate ? " (degenerate)" : "", doneCell.c_str(), c.penetrating, c.approximate, c.separated,
                 p.penetrating, p.approximate, p.separated, fmt("%.2f", med(c.turn)).c_str(),
                 fmt("%.2f", maxOf(c.turn)).c_str(), fmt("%.2f", med(p.turn)).c_str(), fmt("%.2f", maxOf(p.turn)).c_str(),
                 fmt("%.3f", med(c.ratio)).c_str(), fmt("%.3f", maxOf(c.ratio)).c_str(), fmt("%.3f", med(c.cpu)).c_str(),
                 fmt("%.3f", maxOf(c.cpu)).c_str(), fmt("%.3f", med(fr.cpu)).c_str(), fmt("%.3f", maxOf(fr.cpu)).c_str(),
                 fmt("%.3f", med(p.cpu)).c_str(), fmt("%.3f", maxOf(p.cpu)).c_str(),
-                fmt("%.0f", med(c.iterations)).c_str(), fmt("%.0f", med(c.triangles)).c_str());
+                fmt("%.0f", med(c.iterations)).c_str(), fmt("%.0f", med(c.triangles)).c_str(),
+                fmt("%.4f", med(c.depth)).c_str(), fmt("%.4f", med(r.fclDepth)).c_str(),
+                fmt("%.4f", maxOf(r.fclDepth)).c_str(), fmt("%.2f", med(r.fclTurn)).c_str(),
+                fmt("%.2f", maxOf(r.fclTurn)).c_str(), fmt("%.3f", med(r.fclCpu)).c_str(),
+                fmt("%.3f", maxOf(r.fclCpu)).c_str());
+  }
+  std::printf("\n");
+
+  // Table 1 of the paper: its query's time per frame beside mink's coherent query.
+  std::printf("Table 1 (the paper's scenes; paper: its Table 1 total per frame, ms, on its machine; target: a "
+              "quarter of it; ms: thread CPU per query, median):\n\n");
+  std::printf("| scene | triangles A / B | frames done | CPD setup ms | CPD ms med | CPD ms max | paper ms | target ms "
+              "| CPD / paper | fresh ms med | PD ms med | FCL ms med | FCL contacts med | note |\n");
+  std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n");
+  for (const Row& r : rows) {
+    if (!r.paper) continue;
+    const MethodSummary &c = r.m[0], &fr = r.m[1], &p = r.m[2];
+    std::printf("| %s | %d / %d | %d of %d | %s | %s | %s | %.2f | %.2f | %s | %s | %s | %s | %s | %s |\n",
+                r.scene.c_str(), r.triA, r.triB, r.done, r.frames, fmt("%.1f", r.setupMs).c_str(),
+                fmt("%.3f", med(c.cpu)).c_str(), fmt("%.3f", maxOf(c.cpu)).c_str(), r.paperMs, r.paperMs / 4,
+                fmt("%.2f", med(c.cpu) / r.paperMs).c_str(), fmt("%.3f", med(fr.cpu)).c_str(),
+                fmt("%.3f", med(p.cpu)).c_str(), fmt("%.3f", med(r.fclCpu)).c_str(),
+                fmt("%.0f", med(r.fclContacts)).c_str(), r.note.c_str());
   }
   std::printf("\n");
 
@@ -397,7 +564,7 @@ int main(int argc, char** argv) {
   csv << "scene,degenerate,triangles_a,triangles_b,frames,frames_done,setup_ms,method,penetrating,approximate,separated,"
          "from_previous_frame,off_boundary,turn_median_deg,turn_max_deg,depth_ratio_median,depth_ratio_max,depth_median,"
          "depth_max,q1_ms,median_ms,q3_ms,max_ms,wall_median_ms,iterations_median,iterations_max,triangles_median,"
-         "triangles_max,note\n";
+         "triangles_max,paper_ms,note\n";
   for (const Row& r : rows)
     for (int m = 0; m < kMethods; ++m) {
       const MethodSummary& s = r.m[m];
@@ -408,8 +575,17 @@ int main(int argc, char** argv) {
           << maxOf(s.depth) << ',' << mink_bench::quantile(s.cpu, 0.25) << ',' << med(s.cpu) << ','
           << mink_bench::quantile(s.cpu, 0.75) << ',' << maxOf(s.cpu) << ',' << med(s.wall) << ','
           << med(s.iterations) << ',' << maxOf(s.iterations) << ',' << med(s.triangles) << ',' << maxOf(s.triangles)
-          << ",\"" << r.note << "\"\n";
+          << ',' << r.paperMs << ",\"" << r.note << "\"\n";
     }
+  for (const Row& r : rows) {
+    if (r.fclCpu.empty()) continue;
+    csv << '"' << r.scene << "\"," << (r.degenerate ? 1 : 0) << ',' << r.triA << ',' << r.triB << ',' << r.frames << ','
+        << r.fclDone << ",,fcl," << r.fclCollided << ",0," << r.fclDone - r.fclCollided << ",0,0," << med(r.fclTurn)
+        << ',' << maxOf(r.fclTurn) << ",,," << med(r.fclDepth) << ',' << maxOf(r.fclDepth) << ','
+        << mink_bench::quantile(r.fclCpu, 0.25) << ',' << med(r.fclCpu) << ',' << mink_bench::quantile(r.fclCpu, 0.75)
+        << ',' << maxOf(r.fclCpu) << ",," << med(r.fclContacts) << ',' << maxOf(r.fclContacts) << ",,," << r.paperMs
+        << ",\"" << r.fclNote << "\"\n";
+  }
   std::printf("%d answer%s off ∂M; CSV: %s, %s; the run took %.0f s of wall time\n", warnings, warnings == 1 ? "" : "s",
               out.c_str(), framesOut.c_str(), (mink_bench::wallMs() - runStart) * 1e-3);
   return 0;

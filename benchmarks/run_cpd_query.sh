@@ -6,8 +6,10 @@
 #   --quick: a smoke run whose numbers are not for publication; it writes into
 #            $MINK_BENCH_QUICK_DIR (default ${TMPDIR:-/tmp}/mink-cpd-query-quick) so the
 #            committed results are not overwritten.
-# The full run takes seconds (60 frames per scene); every scene runs in a child process
-# stopped after --scene-timeout seconds of wall time (default 90).
+# The small motions take seconds (60 frames each); the paper's four scenes (20 frames,
+# --paper-frames) take up to a second per query. Every scene runs in a child process stopped
+# after --scene-timeout seconds of wall time (default 90; FCL's column in a second child with
+# the same limit); the README's run used --scene-timeout 60.
 # environment: MINK_BENCH_BUILD_DIR (default ${TMPDIR:-/tmp}/mink-bench-build),
 #              PYTHON (an interpreter with matplotlib; default: the first of python3,
 #              /usr/bin/python3 that has it), JOBS (build parallelism, default 2).
