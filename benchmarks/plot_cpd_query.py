@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Plots benchmarks/results/cpd_query_frames.csv (mink_cpd_query_bench): per scene, along
 the motion, the turn of the direction since the previous frame (degrees, symmetric-log
-scale) of the coherent CPD query, of CPD reset before each query and of the Euclidean PD;
-and beside it the depth of each.
+scale) of the coherent CPD query, of CPD reset before each query, of the Euclidean PD and
+of FCL's deepest contact normal (when the benchmark was built with FCL); and beside it the
+depth of each (FCL's: the largest contact penetration_depth of a triangle pair).
 
 usage: plot_cpd_query.py [cpd_query_frames.csv] [cpd_query.png]
 """
@@ -40,6 +41,7 @@ styles = {
     "cpd": dict(color="#2ca02c", lw=1.8, label="CPD (coherent)"),
     "fresh": dict(color="#1f77b4", lw=0.9, ls=":", label="CPD, reset each frame"),
     "pd": dict(color="#d62728", lw=1.2, ls="--", label="Euclidean PD"),
+    "fcl": dict(color="#7f7f7f", lw=0.9, ls="-.", label="FCL contact (deepest)"),
 }
 
 fig, axes = plt.subplots(len(scenes), 2, figsize=(11, 2.1 * len(scenes) + 0.8), squeeze=False)
