@@ -368,9 +368,9 @@ int main(int argc, char** argv) {
     }
 
     // FCL's contact on the same frames, in its own child.
+#ifdef MINK_BENCH_HAVE_FCL
     bool fclFinished = false;
     double fclChildCpu = 0;
-#ifdef MINK_BENCH_HAVE_FCL
     const std::vector<FclRecord> frecs = mink_bench::inChild<FclRecord>(
         sceneTimeout,
         [&](const std::function<void(const FclRecord&)>& emit) {
