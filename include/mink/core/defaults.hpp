@@ -129,6 +129,13 @@ constexpr double kCpdBeta = 2.0;
 /// CPD, Algorithm 2: balls built per query before the best candidate is returned as
 /// CpdStatus::Approximate. Unit: iterations. Safe range: 1 .. 1000.
 constexpr int kCpdMaxIterations = 24;
+/// CPD, Algorithm 2: the ball grows (by beta) to at most this times |q0|, the start's
+/// depth; then the best candidate is returned as Approximate. Without a cap the growth
+/// reaches Phong projections far deeper than the start where none lies near it (on the
+/// paper's cone/axes scene: depth 3.7 against a start and a Euclidean depth of 0.31, and
+/// 9 s for the frame). Unit: dimensionless. Safe range: 0.5 .. 10 (larger finds farther
+/// projections, at the cost of bigger balls).
+constexpr double kCpdMaxRadiusFactor = 2.0;
 /// CPD, initialisation without a previous frame: bisection steps per direction for the
 /// first exit of the origin from M (each one mesh-overlap test). The exit only seeds the
 /// search ball, so 2^-30 of the scene's size is ample. Unit: steps. Safe range: 8 .. 60.

@@ -21,8 +21,9 @@
 //      projections near q, as deep inside a coarse curved M, the nearest to o can switch
 //      between them from frame to frame).
 //      Otherwise the barycentre c of least |n̂ × c| (the paper's Ψ · c) becomes q_{i+1}
-//      if it improves on the best so far, else the ball grows by beta; after the caps the
-//      best candidate is returned as Approximate (it lies on ∂M).
+//      if it improves on the best so far, else the ball grows by beta, up to
+//      maxRadiusFactor · |q0|; after the caps the best candidate is returned as
+//      Approximate (it lies on ∂M).
 //   4. penetrationDepth(): the same loop with the nearest point of the patch to o instead
 //      of the Phong projection; it is a local minimum of |q| over ∂M when it lies strictly
 //      inside the ball.
@@ -56,6 +57,7 @@ struct CpdOptions {
   T beta = T(defaults::kCpdBeta);            ///< growth of the ball when q does not improve
   int maxIterations = defaults::kCpdMaxIterations;   ///< balls built per query
   int exitBisectionSteps = defaults::kCpdExitBisectionSteps;  ///< per start direction
+  T maxRadiusFactor = T(defaults::kCpdMaxRadiusFactor);     ///< ball radius <= this · |start q|
   PhongOptions<T> phong;                     ///< Definition 1's tolerance, Newton's cap
   LocalMinkowskiSumOptions<T> localSum;      ///< how the patch finds its facets
 };
@@ -105,6 +107,7 @@ class PenetrationSearch {
       throw InvalidInput("CpdOptions: beta must be greater than 1 and finite");
     if (options.maxIterations < 1) throw InvalidInput("CpdOptions: maxIterations must be at least 1");
     if (options.exitBisectionSteps < 1) throw InvalidInput("CpdOptions: exitBisectionSteps must be at least 1");
+    if (!(options.maxRadiusFactor > T(0))) throw InvalidInput("CpdOptions: maxRadiusFactor must be positive");
     if (!(options.phong.barycentricTolerance >= T(0))) throw InvalidInput("CpdOptions: phong.barycentricTolerance must be >= 0");
   }
 
@@ -133,6 +136,9 @@ class PenetrationSearch {
       q = firstExit(cA - cB, reach);
     }
     T r = radiusAround(q);
+    // Growth stops at maxRadiusFactor |q0|: past it, Algorithm 2 reaches projections far
+    // deeper than the start (cone/axes: 3.7 where the start and PD are 0.31).
+    T rCap = std::min(rMax, options_.maxRadiusFactor * q.stableNorm());
     T bestScore = std::numeric_limits<T>::infinity();
     bool haveBest = false;
     Candidate best;
@@ -147,6 +153,7 @@ class PenetrationSearch {
           res.fromPreviousFrame = false;
           q = firstExit(cA - cB, reach);
           r = radiusAround(q);
+          rCap = std::min(rMax, options_.maxRadiusFactor * q.stableNorm());
         } else {
           r *= options_.beta;
         }
@@ -173,7 +180,7 @@ class PenetrationSearch {
       } else {
         r *= options_.beta;
       }
-      if (r > rMax) break;
+      if (r > rCap) break;
     }
     if (!haveBest) {
       // No patch at all within the caps: report the seed (on ∂M to the bisection's width).
@@ -196,6 +203,19 @@ class PenetrationSearch {
   };
 
   void finish(const Candidate& c, CpdStatus status, Mode mode, CpdResult<T>& res) {
+    if (c.point == Vec3<T>::Zero()) {
+      // q = o: o on ∂M (touching, where the exact test on the patch's corners missed it
+      // by their rounding), which counts as Separated.
+      const int iterations = res.iterations;
+      const T radius = res.radius;
+      const long long built = res.trianglesBuilt;
+      res = CpdResult<T>{};
+      res.iterations = iterations;
+      res.radius = radius;
+      res.trianglesBuilt = built;
+      hasLast_ = false;
+      return;
+    }
     res.status = status;
     res.point = c.point;
     res.depth = c.point.stableNorm();
