@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds mink and runs its whole test suite twice, then its fuzzer:
 #   1. Release, everything (tests, benchmarks, examples) in build/, then ctest;
-#   2. AddressSanitizer + UndefinedBehaviorSanitizer (-O1 -g, assertions on), tests only,
+#   2. AddressSanitizer + UndefinedBehaviorSanitizer (-O1 -g1, assertions on), tests only
+#      but for the two comparisons with CGAL's exact constructions (tests/CMakeLists.txt),
 #      in build-asan/, then ctest without the package test;
 #   3. the libFuzzer targets (fuzz/run_fuzz.sh: clang; mink_mdd_fuzz and mink_mesh_fuzz
 #      each replay their seeds and regressions, then fuzz a fixed sequence: MINK_FUZZ_SEED=1,
