@@ -10,10 +10,13 @@
 //   - CGAL::Gmpq, exact: the L-block against a box, aligned: the volume equal as a
 //     rational, every triangle's centroid exactly on CGAL's boundary, the area (all faces
 //     axis-aligned) equal as a rational;
+//   - the Euclidean penetration depth (cpd/continuous_penetration_depth.hpp) equal to the
+//     distance from o to CGAL's boundary, to 1e-9 of the scene, and the CPD no less;
 //   - a superset of the convolution (every face–vertex pair, compatible or not) trims to
 //     the same boundary: the trimming classifies, it does not rely on the facets given.
 // (A torus of 192 triangles takes CGAL ten seconds and more: kept out of the suite; the
 // benchmark compares on it.)
+#include "mink/cpd/continuous_penetration_depth.hpp"
 #include "mink/cpd/minkowski_boundary.hpp"
 
 #include <gtest/gtest.h>
@@ -121,6 +124,17 @@ TEST(MinkowskiBoundary, AgainstCgalMinkowskiSum) {
           if (mink_test::distanceToPatch(P, x) > 1e-9 * L) ++uncovered;
         }
     EXPECT_EQ(uncovered, 0) << "of " << samples << " points sampled on CGAL's boundary";
+    // The Euclidean penetration depth is the distance from o to CGAL's boundary (every
+    // case overlaps), and the CPD's point of ∂M is no nearer.
+    const mink::CpdResult<double> e = mink::penetrationDepth(A, poseA, B, poseB);
+    const mink::CpdResult<double> r = mink::ContinuousPenetrationDepth<double>(A, B).query(poseA, poseB);
+    const double pd = ref.distance(V::Zero());
+    std::printf("[cpd] %-32s Euclidean depth %.12f (CGAL %.12f), CPD %.12f\n", c.name.c_str(), e.depth, pd, r.depth);
+    EXPECT_EQ(e.status, mink::CpdStatus::Penetrating);
+    EXPECT_NEAR(e.depth, pd, 1e-9 * L);
+    EXPECT_LT(ref.distance(e.point), 1e-9 * L);
+    EXPECT_NE(r.status, mink::CpdStatus::Separated);
+    EXPECT_GE(r.depth, pd - 1e-9 * L);
   }
 }
 

@@ -11,8 +11,10 @@
 //      the shortest first exit of o from M along 27 directions (the line between the
 //      shapes' centres, and to a cube's faces, edges and corners), each found on the
 //      overlap test: the first free
-//      point of a ladder 2^-16 .. 1 of the far end, then bisection (mink's stand-in for
-//      the paper's PolyDepth: any point of ∂M will do to seed, a near one saves balls).
+//      point of a ladder 2^-16 .. 1 of the far end, then bisection; and from that exit,
+//      the point of ∂M nearest to o (the Euclidean penetration depth, global): the patch
+//      of a ball around o, grown from |exit| / 8 by doubling until it meets ∂M, holds it
+//      (mink's stand-in for the paper's PolyDepth, which seeds with the global depth).
 //   3. Algorithm 2: the patch of ∂M in the ball S(q_i, r), r = alpha |q_i|
 //      (cpd/local_minkowski_sum.hpp); Phong projection of o onto every triangle
 //      (cpd/phong_projection.hpp); the nearest projection inside the ball is the answer —
@@ -24,9 +26,10 @@
 //      if it improves on the best so far, else the ball grows by beta, up to
 //      maxRadiusFactor · |q0|; after the caps the best candidate is returned as
 //      Approximate (it lies on ∂M).
-//   4. penetrationDepth(): the same loop with the nearest point of the patch to o instead
-//      of the Phong projection; it is a local minimum of |q| over ∂M when it lies strictly
-//      inside the ball.
+//   4. penetrationDepth(): the nearest point of step 2, the global minimum of |q| over
+//      ∂M. Only if rounding kept every ball around o empty, the loop of step 3 with the
+//      nearest point of the patch to o instead of the Phong projection (a local minimum
+//      of |q| when it lies strictly inside the ball).
 // Floating-point T only (Phong projection needs rounding and sqrt).
 #pragma once
 
@@ -64,7 +67,7 @@ struct CpdOptions {
 
 enum class CpdStatus {
   Separated,    ///< the interiors do not overlap (touching included): depth 0
-  Penetrating,  ///< overlap, and q satisfies Definition 1 (CPD) / is a local nearest point (PD)
+  Penetrating,  ///< overlap, and q satisfies Definition 1 (CPD) / is the nearest point of ∂M (PD)
   Approximate,  ///< overlap, but no such q within the caps: q is the best found, on ∂M
                 ///< (if no ball met ∂M at all: the start, within 2^-exitBisectionSteps of
                 ///< the scene's size outside M)
@@ -134,6 +137,21 @@ class PenetrationSearch {
       res.fromPreviousFrame = true;
     } else {
       q = firstExit(cA - cB, reach);
+      Candidate nearest;
+      switch (nearestOfBoundary(poseA, poseB, q, res, nearest)) {
+        case Nearest::Touching:
+          hasLast_ = false;
+          return CpdResult<T>{};
+        case Nearest::Found:
+          if (mode == Mode::Euclidean) {
+            finish(nearest, CpdStatus::Penetrating, mode, res);
+            return res;
+          }
+          q = nearest.point;
+          break;
+        case Nearest::Missed:
+          break;
+      }
     }
     T r = radiusAround(q);
     // Growth stops at maxRadiusFactor |q0|: past it, Algorithm 2 reaches projections far
@@ -286,6 +304,40 @@ class PenetrationSearch {
     return best;
   }
 
+  enum class Nearest { Found, Touching, Missed };
+
+  /// The point of ∂M nearest to o, globally: the patch of the ball around o of radius
+  /// rho holds every point of ∂M within rho of o, so when its nearest point to o lies in
+  /// the ball it is the nearest of all ∂M. rho climbs |exit| / 2^k, k = kNearestRungs..1,
+  /// then the exit's own length (an exit is a point of ∂M, so the last ball meets ∂M):
+  /// the first ball that meets ∂M answers, at most twice the depth, and a start deep in
+  /// a narrow cavity of M (two linked tori) is found where no exit direction sees it.
+  /// Missed only if rounding kept even the last ball empty.
+  Nearest nearestOfBoundary(const Pose<T>& poseA, const Pose<T>& poseB, const Vec3<T>& exit, CpdResult<T>& res,
+                            Candidate& nearest) {
+    const T d0 = exit.stableNorm();
+    if (!(d0 > T(0)) || !std::isfinite(d0)) return Nearest::Missed;
+    const Vec3<T> o = Vec3<T>::Zero();
+    for (int k = kNearestRungs; k >= 0; --k) {
+      // The exit is the free end of its bisection: outside M by at most its width. (Finer
+      // rungs, factors 2^(1/4), cost more: the depth is most often the exit's own length,
+      // so every rung below it is built empty, which is cheap, but not free.)
+      const T rho = k > 0 ? std::ldexp(d0, -k) : d0 * T(1.0625);
+      const MinkowskiPatch<T>& patch = sum_.update(poseA, poseB, o, rho);
+      ++res.iterations;
+      res.radius = rho;
+      res.trianglesBuilt += static_cast<long long>(patch.triangles.size());
+      if (patch.triangles.empty()) continue;
+      if (originOnPatch(patch)) return Nearest::Touching;
+      Candidate ignored;
+      euclideanStep(patch, o, rho, ignored, nearest);
+      if (nearest.point.stableNorm() <= rho) return Nearest::Found;
+    }
+    return Nearest::Missed;
+  }
+
+  static constexpr int kNearestRungs = 3;  // balls of |exit| / 8, / 4, / 2 before |exit|
+
   /// Does o lie on a triangle of the patch (exactly, on its corners' coordinates)?
   static bool originOnPatch(const MinkowskiPatch<T>& patch) {
     const Vec3<T> o = Vec3<T>::Zero();
@@ -404,9 +456,9 @@ class ContinuousPenetrationDepth {
   detail::PenetrationSearch<T> search_;
 };
 
-/// The Euclidean penetration depth found from the same start: a point q of ∂M nearest to
-/// o among the points of ∂M near it (a local minimum of |q|; the global one when the
-/// search's balls reach it first). Same result type; the normal is the direction. Such a
+/// The Euclidean penetration depth: a point q of ∂M nearest to o (the global minimum of
+/// |q|, from the patch of the smallest ball around o, among |exit| / 8, / 4, / 2 and
+/// |exit|, that meets ∂M). Same result type; the normal is the direction. Such a
 /// point can be the corner of a step of ∂M (a concave crease whose two faces both turn
 /// away from o); B moved by depth * direction touches A there, but moving it a little
 /// further along direction makes them overlap again.
