@@ -29,10 +29,13 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
+#include <cstddef>
 #include <initializer_list>
 #include <limits>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "mink/core/scalar_traits.hpp"
@@ -57,9 +60,43 @@ inline void twoProduct(F a, F b, F& x, F& y) {
   y = std::fma(a, b, -x);
 }
 
-// h = e + b (e non-overlapping, increasing magnitude; zeros dropped).
+/// An expansion in storage the caller owns (a stack array of `capacity` numbers), so that
+/// an exact predicate allocates nothing; swap exchanges the views, not the numbers. The
+/// helpers below take it or a std::vector alike (mesh/detail/signed_volume.hpp sums
+/// expansions of unbounded length).
 template <class F>
-inline void growExpansion(std::vector<F>& e, F b, std::vector<F>& h) {
+struct ExpansionView {
+  using value_type = F;
+  F* data;
+  std::size_t capacity;
+  std::size_t n = 0;
+  void clear() { n = 0; }
+  void push_back(F x) {
+    assert(n < capacity && "ExpansionView: the stated bound on the expansion's length is wrong");
+    data[n++] = x;
+  }
+  void assign(std::size_t count, F x) {
+    clear();
+    for (std::size_t i = 0; i < count; ++i) push_back(x);
+  }
+  std::size_t size() const { return n; }
+  bool empty() const { return n == 0; }
+  F* begin() { return data; }
+  F* end() { return data + n; }
+  const F* begin() const { return data; }
+  const F* end() const { return data + n; }
+  const F& operator[](std::size_t i) const { return data[i]; }
+  void swap(ExpansionView& o) {
+    std::swap(data, o.data);
+    std::swap(capacity, o.capacity);
+    std::swap(n, o.n);
+  }
+};
+
+// h = e + b (e non-overlapping, increasing magnitude; zeros dropped). h.size() <= e.size() + 1.
+template <class E>
+inline void growExpansion(E& e, typename E::value_type b, E& h) {
+  using F = typename E::value_type;
   h.clear();
   F q = b;
   for (F ei : e) {
@@ -71,9 +108,10 @@ inline void growExpansion(std::vector<F>& e, F b, std::vector<F>& h) {
   if (q != F(0) || h.empty()) h.push_back(q);
 }
 
-// h = e * b exactly (Shewchuk's scale-expansion, zeros dropped).
-template <class F>
-inline void scaleExpansion(const std::vector<F>& e, F b, std::vector<F>& h) {
+// h = e * b exactly (Shewchuk's scale-expansion, zeros dropped). h.size() <= 2 e.size().
+template <class E>
+inline void scaleExpansion(const E& e, typename E::value_type b, E& h) {
+  using F = typename E::value_type;
   h.clear();
   F q, hh;
   twoProduct(e[0], b, q, hh);
@@ -93,10 +131,9 @@ inline void scaleExpansion(const std::vector<F>& e, F b, std::vector<F>& h) {
 
 /// acc += a * b * c exactly (acc non-overlapping, increasing magnitude; zeros dropped):
 /// two-product of a and b, scaled by c, grown into acc term by term. prod, term and tmp
-/// are scratch.
-template <class F>
-inline void addTripleProduct(std::vector<F>& acc, F a, F b, F c, std::vector<F>& prod, std::vector<F>& term,
-                             std::vector<F>& tmp) {
+/// are scratch. acc grows by at most 4 terms.
+template <class E, class F = typename E::value_type>
+inline void addTripleProduct(E& acc, F a, F b, F c, E& prod, E& term, E& tmp) {
   if (a == F(0) || b == F(0) || c == F(0)) return;
   F h, l;
   twoProduct(a, b, h, l);
@@ -111,8 +148,9 @@ inline void addTripleProduct(std::vector<F>& acc, F a, F b, F c, std::vector<F>&
 }
 
 /// The sign of a non-overlapping expansion: that of its largest non-zero component.
-template <class F>
-inline int expansionSign(const std::vector<F>& e) {
+template <class E>
+inline int expansionSign(const E& e) {
+  using F = typename E::value_type;
   for (std::size_t i = e.size(); i-- > 0;)
     if (e[i] != F(0)) return e[i] > F(0) ? 1 : -1;
   return 0;
@@ -161,7 +199,11 @@ int exactOrient3d(const Vec3<F>& a, const Vec3<F>& b, const Vec3<F>& c, const Ve
   // det = sum over permutations (i, j, k) of sign * u_i v_j w_k.
   static const int perm[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
   static const int sgn[6] = {1, 1, 1, -1, -1, -1};
-  std::vector<F> acc{F(0)}, tmp, prod, term;
+  // 48 triple products of at most 4 terms each, grown into {0}: at most 193 terms.
+  constexpr std::size_t kTerms = 1 + 48 * 4;
+  F accBuf[kTerms], tmpBuf[kTerms], prodBuf[2], termBuf[4];
+  ExpansionView<F> acc{accBuf, kTerms}, tmp{tmpBuf, kTerms}, prod{prodBuf, 2}, term{termBuf, 4};
+  acc.push_back(F(0));
   for (int p = 0; p < 6; ++p)
     for (int x = 0; x < 2; ++x)
       for (int y = 0; y < 2; ++y)
@@ -186,7 +228,11 @@ int exactOrient2d(F ax, F ay, F bx, F by, F cx, F cy) {
   twoSum(by, F(-ay), uy[1], uy[0]);
   twoSum(cx, F(-ax), vx[1], vx[0]);
   twoSum(cy, F(-ay), vy[1], vy[0]);
-  std::vector<F> acc{F(0)}, tmp;
+  // 16 terms grown into {0}: at most 17.
+  constexpr std::size_t kTerms = 1 + 16;
+  F accBuf[kTerms], tmpBuf[kTerms];
+  ExpansionView<F> acc{accBuf, kTerms}, tmp{tmpBuf, kTerms};
+  acc.push_back(F(0));
   auto add = [&](F t) {
     if (t == F(0)) return;
     growExpansion(acc, t, tmp);
@@ -237,7 +283,10 @@ Vec3<T> crossOfExpansions(const Vec3<T>& uh, const Vec3<T>& ul, const Vec3<T>& v
   // beside coordinates of size 1): then every term is summed exactly and rounded.
   const T len = n.cwiseAbs().maxCoeff();
   if (err.maxCoeff() <= T(16) * eps * len) return n;
-  std::vector<T> acc, tmp;
+  // Per component 16 terms grown into {0}: at most 17.
+  constexpr std::size_t kTerms = 1 + 16;
+  T accBuf[kTerms], tmpBuf[kTerms];
+  detail::ExpansionView<T> acc{accBuf, kTerms}, tmp{tmpBuf, kTerms};
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     acc.assign(1, T(0));

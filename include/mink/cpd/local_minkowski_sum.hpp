@@ -24,9 +24,9 @@
 #include <memory>
 #include <cmath>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
+#include "mink/core/detail/flat_hash_map.hpp"
 #include "mink/core/error.hpp"
 #include "mink/cpd/convex_map.hpp"
 #include "mink/cpd/convolution.hpp"
@@ -392,7 +392,7 @@ class LocalMinkowskiSum {
   typename detail::Trimmer<T>::Region region_;
   detail::Trimmer<T> trimmer_;
   std::vector<ConvolutionPair> facets_;
-  std::unordered_set<std::uint64_t> seen_;
+  detail::FlatHashSet<std::uint64_t> seen_;
   std::vector<std::pair<int, int>> stack_;
   MinkowskiPatch<T> patch_;
   // ConvexMaps: the two maps, each feature's cell of the last call, a walk's work space.

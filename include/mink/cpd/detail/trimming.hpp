@@ -36,11 +36,10 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
+#include "mink/core/detail/flat_hash_map.hpp"
 #include "mink/core/expansion.hpp"
 #include "mink/core/orientation.hpp"
 #include "mink/cpd/convolution.hpp"
@@ -508,13 +507,13 @@ class Trimmer {
   const ConvolutionFrame<T>* frame_ = nullptr;
   const std::vector<ConvolutionPair>* facets_ = nullptr;
   Region region_;
-  std::unordered_map<std::uint64_t, int> mIndex_;
+  FlatHashMap<std::uint64_t, int> mIndex_;
   std::vector<std::pair<int, int>> mPair_;
   std::vector<Vec3<T>> mCoord_;
   std::vector<Soup> soup_;
   std::vector<Box3> boxes_;
   BoxTree tree_;
-  std::unordered_map<TrimKey, int, TrimKeyHash> keyIndex_;
+  FlatHashMap<TrimKey, int, TrimKeyHash> keyIndex_;
   std::vector<TrimKey> keys_;
   std::vector<Vec3<T>> coords_;
   std::vector<Homog> hbox_;  // floating T: each corner's enclosure (empty for points)
@@ -524,7 +523,7 @@ class Trimmer {
   };
   mutable std::vector<PlaneIVCache> planeCache_;  // floating T: per polygon, made on first use
   mutable PlaneIVCache boxCache_[6];
-  mutable std::unordered_map<TrimKey, int, TrimKeyHash> exactSide_;  // (corner, cut, F) -> exact side
+  mutable FlatHashMap<TrimKey, int, TrimKeyHash> exactSide_;  // (corner, cut, F) -> exact side
   // The last triangle pairs found overlapping (a ring of kWitnesses).
   static constexpr std::size_t kWitnesses = 16;
   mutable std::vector<std::pair<int, int>> witnesses_;
@@ -536,8 +535,8 @@ class Trimmer {
   std::vector<Final> final_;
   std::vector<int> finalV_, parent_, status_, representative_;
   std::vector<std::uint64_t> finalE_;
-  std::unordered_map<std::uint64_t, int> edgeUse_, sideOwner_;
-  std::unordered_set<std::uint64_t> blocked_;  // soup edges lying in another polygon's plane
+  FlatHashMap<std::uint64_t, int> edgeUse_, sideOwner_;
+  FlatHashSet<std::uint64_t> blocked_;  // soup edges lying in another polygon's plane
 };
 
 }  // namespace detail
