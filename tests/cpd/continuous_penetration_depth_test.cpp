@@ -5,15 +5,16 @@
 //   - the MDD paper's convex shapes P1, P2 (and P1 / P1, P2 / P2) triangulated: q on ∂M by
 //     mink's MDD (the exit of M along q's direction), the depth at least the Euclidean one
 //     of the hull of all vertex differences (polyhedron/, checked against CGAL elsewhere);
-//   - turned boxes and non-convex pairs (L, U, torus, cube with a hole, star; two linked
+//   - turned boxes and non-convex pairs (L, U, torus, cube with a hole, star, cup; two linked
 //     tori): q is on ∂M
 //     by FCL's BVH collide — B moved by q + δn does not meet A, B moved by q − δn does;
 //     for the linked tori, the ball around o below the Euclidean depth inside M, sampled
-//     by FCL (its equality with CGAL's exact ∂M is in minkowski_boundary_test.cpp);
+//     by FCL (on small pairs, its equality with CGAL's exact ∂M: minkowski_boundary_test.cpp);
 //   - Definition 1 where the status is Penetrating: |n × q| <= 1e-9 |q|, n along q;
 //   - coherence: along a motion across the medial axis of M the CPD direction turns by
 //     a few degrees per frame while the Euclidean one jumps by 90;
-//   - touching and apart is Separated; bad poses and options are InvalidInput; float.
+//   - touching and apart is Separated, one box inside the other Penetrating; scales 2^-600
+//     .. 2^280 exactly and 1e-3, 1e3 to 1e-9; bad poses and options are InvalidInput; float.
 #include "mink/cpd/continuous_penetration_depth.hpp"
 
 #include <gtest/gtest.h>
@@ -232,7 +233,8 @@ TEST(ContinuousPenetrationDepth, NonConvexPairsOnTheBoundaryByFcl) {
       {"L-block / box", mink_test::lBlock(), mink_test::boxShape(V(-0.5, -0.25, -0.75), V(0.5, 0.25, 0.75)), 0.8},
       {"U-block / L-block", mink_test::uBlock(), mink_test::lBlock(), 0.8},
       {"torus / box", mink_test::torus(12, 8), mink_test::boxShape(V(-0.4, -0.3, -0.5), V(0.4, 0.3, 0.5)), 1.5},
-      {"cube with hole / star", mink_test::cubeWithHole(), scaled(mink_test::starPrism(), 0.0625), 1.0}};
+      {"cube with hole / star", mink_test::cubeWithHole(), scaled(mink_test::starPrism(), 0.0625), 1.0},
+      {"cup / box", mink_test::cup(), mink_test::boxShape(V(-0.3, -0.2, -0.4), V(0.3, 0.2, 0.4)), 1.0}};
   std::mt19937 rng(5);
   for (const Pair& p : pairs) {
     SCOPED_TRACE(p.name);
@@ -396,6 +398,35 @@ TEST(ContinuousPenetrationDepth, TouchingAndApartAreSeparated) {
   const mink::CpdResult<double> in = cpd.query(I, pose(M3::Identity(), V(0.1, 0.0, 0.0)));
   EXPECT_EQ(in.status, CpdStatus::Penetrating);
   EXPECT_NEAR(in.depth, 1.4, 1e-12);  // M = [-1.5, 1.5]^3 − (0.1, 0, 0): its face x = 1.4
+}
+
+TEST(ContinuousPenetrationDepth, DecimalScalesScaleTheAnswer) {
+  // 1e-3 and 1e3 of the unit scene (not powers of two: every coordinate rounds anew), to
+  // 1e-9 relative; the status the same.
+  const mink_test::MeshShape a = mink_test::lBlock(), b = mink_test::boxShape(V(-0.5, -0.25, -0.75), V(0.5, 0.25, 0.75));
+  const M3 RA = rotation(0.3, V(1, 2, 3)), RB = rotation(-0.7, V(0.2, -1, 0.5));
+  const V tA(0.25, -0.5, 0.125), tB(1.375, 0.75, 0.5);
+  auto run = [&](double f, mink::CpdResult<double>& r, mink::CpdResult<double>& e) {
+    const Mesh A = mesh(scaled(a, f)), B = mesh(scaled(b, f));
+    const Pose pa = pose(RA, f * tA), pb = pose(RB, f * tB);
+    r = mink::ContinuousPenetrationDepth<double>(A, B).query(pa, pb);
+    e = mink::penetrationDepth(A, pa, B, pb);
+  };
+  mink::CpdResult<double> unitCpd, unitPd;
+  run(1, unitCpd, unitPd);
+  ASSERT_EQ(unitCpd.status, CpdStatus::Penetrating);
+  ASSERT_EQ(unitPd.status, CpdStatus::Penetrating);
+  for (double f : {1e-3, 1e3}) {
+    SCOPED_TRACE("scale " + std::to_string(f));
+    mink::CpdResult<double> r, e;
+    run(f, r, e);
+    EXPECT_EQ(r.status, unitCpd.status);
+    EXPECT_EQ(e.status, unitPd.status);
+    EXPECT_NEAR(r.depth / f, unitCpd.depth, 1e-9 * unitCpd.depth);
+    EXPECT_NEAR(e.depth / f, unitPd.depth, 1e-9 * unitPd.depth);
+    EXPECT_NEAR((r.direction - unitCpd.direction).norm(), 0, 1e-9);
+    EXPECT_LE(r.normal.cross(r.point).norm(), 1e-9 * r.depth);
+  }
 }
 
 TEST(ContinuousPenetrationDepth, ScalingByAPowerOfTwoScalesTheAnswer) {

@@ -11,7 +11,8 @@
 //     rational, every triangle's centroid exactly on CGAL's boundary, the area (all faces
 //     axis-aligned) equal as a rational;
 //   - the Euclidean penetration depth (cpd/continuous_penetration_depth.hpp) equal to the
-//     distance from o to CGAL's boundary, to 1e-9 of the scene, and the CPD no less;
+//     distance from o to CGAL's boundary, to 1e-9 of the scene; the CPD's q on CGAL's
+//     boundary, no nearer to o, and Definition 1 where Penetrating;
 //   - a superset of the convolution (every face–vertex pair, compatible or not) trims to
 //     the same boundary: the trimming classifies, it does not rely on the facets given.
 // (A torus of 192 triangles takes CGAL ten seconds and more: kept out of the suite; the
@@ -135,6 +136,8 @@ TEST(MinkowskiBoundary, AgainstCgalMinkowskiSum) {
     EXPECT_LT(ref.distance(e.point), 1e-9 * L);
     EXPECT_NE(r.status, mink::CpdStatus::Separated);
     EXPECT_GE(r.depth, pd - 1e-9 * L);
+    EXPECT_LT(ref.distance(r.point), 1e-9 * L) << "the CPD's q is off CGAL's boundary";
+    if (r.status == mink::CpdStatus::Penetrating) EXPECT_LE(r.normal.cross(r.point).norm(), 1e-9 * r.depth);
   }
 }
 
