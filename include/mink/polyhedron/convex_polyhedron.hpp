@@ -170,6 +170,13 @@ class ConvexPolyhedron {
   /// The average of the vertices: a point strictly inside the polyhedron (exact for
   /// exact T), made once at construction so queries never pay O(n) for one.
   const Vec3<T>& interiorPoint() const { return interior_; }
+  /// True when the shape is exactly the convex hull of its vertices, as numbers of T:
+  /// always for fromPoints (an exact hull), and for fromMesh with exact T (validated
+  /// without slack). A fromMesh shape in floating point is convex within its tolerance
+  /// only. Exact questions about the shape (mddExact) are exact questions about the hull
+  /// of its vertices; where this is true, a vertex that no neighbour beats along a
+  /// direction is exactly the support vertex.
+  bool isExactHull() const { return exactHull_; }
   /// False when, for inexact T, some edge's two face normals are opposite within
   /// defaults::kMddParallelEdgeFactor eps (|n_f + n_g| below it: an interior dihedral
   /// angle of about 1e-14 rad in double or less, possible only with a hull tolerance of
@@ -217,6 +224,7 @@ class ConvexPolyhedron {
   T extent_ = T(0);
   Vec3<T> interior_ = Vec3<T>::Zero();
   bool edgesResolved_ = true;
+  bool exactHull_ = false;
   std::shared_ptr<detail::DerivedSlots> derived_;
 };
 
