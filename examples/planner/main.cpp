@@ -222,7 +222,7 @@ int main(int argc, char** argv) {
         csv << i << ',' << w.x() << ',' << w.y() << ',' << w.z() << '\n';
       }
   }
-  std::printf("\nwrote %s and %s (plot: python3 plot_planner.py %s)\n", segPath.c_str(), obPath.c_str(),
+  std::printf("\nwrote %s and %s (plot: python3 examples/planner/plot_planner.py %s)\n", segPath.c_str(), obPath.c_str(),
               outDir.c_str());
   return failures ? 1 : 0;
 }
