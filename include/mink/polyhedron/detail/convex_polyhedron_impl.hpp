@@ -144,8 +144,10 @@ struct PolyhedronBuilder {
     const Vec3<T>& o = pts[loop[0]];
     for (std::size_t i = 2; i < loop.size(); ++i)
       if (width(o, pts[loop[1]], pts[loop[i]]) > width(o, pts[loop[1]], pts[loop[k]])) k = i;
-    for (int v : loop)
-      if (orient3d(o, pts[loop[1]], pts[loop[k]], pts[v]) != 0) return false;
+    // The three spanning corners are on it by definition (and would each cost the exact
+    // stage, since their determinant is exactly zero).
+    for (std::size_t i = 2; i < loop.size(); ++i)
+      if (i != k && orient3d(o, pts[loop[1]], pts[loop[k]], pts[loop[i]]) != 0) return false;
     return true;
   }
 
@@ -255,6 +257,7 @@ struct PolyhedronBuilder {
           if (!(n.dot(rawN[nb]) > T(0))) continue;
           bool coplanar = true;
           for (int v : polys[nb]) {
+            if (v == S[0] || v == S[1] || v == S[k2]) continue;  // spanning corners: on the plane
             if (orient3d(a, b, c, pts[v]) != 0) {
               coplanar = false;
               break;
