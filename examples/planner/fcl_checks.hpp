@@ -32,13 +32,8 @@ inline std::shared_ptr<fcl::Convex<double>> toFcl(const Polyhedron& shape) {
   return std::make_shared<fcl::Convex<double>>(vertices, shape.numFaces(), faces);
 }
 
-/// mink::Pose → FCL's transform (an Eigen isometry), written out by hand.
-inline fcl::Transform3d toFcl(const Pose& pose) {
-  fcl::Transform3d tf = fcl::Transform3d::Identity();
-  tf.linear() = pose.rotation;
-  tf.translation() = pose.translation;
-  return tf;
-}
+/// mink::Pose → FCL's transform (fcl::Transform3d is Eigen::Isometry3d).
+inline fcl::Transform3d toFcl(const Pose& pose) { return pose.toIsometry(); }
 
 /// The scene's shapes and obstacle transforms as FCL sees them.
 struct FclScene {
