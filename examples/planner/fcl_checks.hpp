@@ -4,8 +4,10 @@
 //     a step of 1 % of the segment; 1001: 0.1 %); misses contacts between two samples;
 //   * conservative advancement: fcl::continuousCollide with CCDC_CONSERVATIVE_ADVANCEMENT
 //     and CCDM_TRANS (translation motion; FCL 0.7 has it for shape pairs, here Convex ×
-//     Convex, distances by libccd's GJK). It advances by distance / motion bound and stops
-//     when the step falls below its time tolerance, so a near miss can be called a contact.
+//     Convex), its distances from libccd's GJK (GST_LIBCCD, FCL's default) or FCL's own
+//     (GST_INDEP). It advances by distance / motion bound and stops when the step falls
+//     below its time tolerance, so a near miss can be called a contact, and a distance
+//     that is too large lets it step over a contact.
 // Every shape is an fcl::Convex built from the faces of the same mink hull, so all
 // methods see the same polyhedra. Broad phase: the candidates of nearbyObstacles().
 #pragma once
@@ -66,13 +68,15 @@ inline Verdict checkSegmentSampled(const Scene& scene, const FclScene& fcl, cons
   return Verdict::Free;
 }
 
-/// fcl::continuousCollide, conservative advancement on translation motion, per candidate.
+/// fcl::continuousCollide, conservative advancement on translation motion, per candidate,
+/// with the GJK of `solver` (fcl::GST_LIBCCD or fcl::GST_INDEP).
 inline Verdict checkSegmentConservativeAdvancement(const Scene& scene, const FclScene& fcl, const Segment& seg,
-                                                   const std::vector<int>& candidates) {
+                                                   const std::vector<int>& candidates,
+                                                   fcl::GJKSolverType solver = fcl::GST_LIBCCD) {
   fcl::ContinuousCollisionRequestd request;
   request.ccd_solver_type = fcl::CCDC_CONSERVATIVE_ADVANCEMENT;
   request.ccd_motion_type = fcl::CCDM_TRANS;
-  request.gjk_solver_type = fcl::GST_LIBCCD;
+  request.gjk_solver_type = solver;
   const fcl::Transform3d begin = toFcl(scene.robot.poseAt(seg.start));
   fcl::Transform3d end = begin;
   end.translation() += seg.s;

@@ -85,10 +85,11 @@ int main(int argc, char** argv) {
     planner::nearbyObstacles(wall, wall.segments[0], near);
     const planner::SegmentCheck c = planner::checkSegmentMdd(wall, wall.segments[0], near);
     std::printf("thin wall (1 cm panel, 8 m segment): mink mdd %s (contact at t = %.5f), FCL 101 poses %s, "
-                "1001 poses %s, FCL conservative advancement %s\n",
+                "1001 poses %s; FCL conservative advancement: libccd %s, indep %s\n",
                 name(c.verdict), c.contact, name(planner::checkSegmentSampled(wall, fclWall, wall.segments[0], near, 101)),
                 name(planner::checkSegmentSampled(wall, fclWall, wall.segments[0], near, 1001)),
-                name(planner::checkSegmentConservativeAdvancement(wall, fclWall, wall.segments[0], near)));
+                name(planner::checkSegmentConservativeAdvancement(wall, fclWall, wall.segments[0], near)),
+                name(planner::checkSegmentConservativeAdvancement(wall, fclWall, wall.segments[0], near, fcl::GST_INDEP)));
     if (c.verdict != planner::Verdict::Blocked) {
       std::printf("FAIL: mink calls the thin-wall segment free\n");
       ++failures;
@@ -106,7 +107,8 @@ int main(int argc, char** argv) {
                                  {"mink mdd + MddCache per obstacle", {}, {}},
                                  {"FCL collide, 101 poses (1 %)", {}, {}},
                                  {"FCL collide, 1001 poses (0.1 %)", {}, {}},
-                                 {"FCL continuousCollide (CA, trans)", {}, {}}};
+                                 {"FCL continuousCollide, CA, libccd", {}, {}},
+                                 {"FCL continuousCollide, CA, indep", {}, {}}};
   // Each pass checks every segment with every method; a segment's time is its fastest of
   // kPasses (the caches are emptied before each pass, so every pass runs the same queries).
   constexpr int kPasses = 3;
@@ -129,7 +131,8 @@ int main(int argc, char** argv) {
         } else if (m == 2 || m == 3) {
           v = planner::checkSegmentSampled(scene, fcl, seg, near, m == 2 ? 101 : 1001);
         } else {
-          v = planner::checkSegmentConservativeAdvancement(scene, fcl, seg, near);
+          v = planner::checkSegmentConservativeAdvancement(scene, fcl, seg, near,
+                                                           m == 4 ? fcl::GST_LIBCCD : fcl::GST_INDEP);
         }
         methods[m].micros[k] = std::min(methods[m].micros[k], microseconds(t0, Clock::now()));
         methods[m].verdict[k] = v;
@@ -184,13 +187,15 @@ int main(int argc, char** argv) {
   // FCL's own witness: a pose where fcl::collide reports overlap is a contact whatever
   // mink says, so a segment conservative advancement calls free while sampling finds a
   // colliding pose is an error of conservative advancement by FCL's own account.
-  int caFreeSampledBlocked = 0;
-  for (std::size_t k = 0; k < n; ++k)
-    caFreeSampledBlocked += methods[4].verdict[k] == planner::Verdict::Free &&
-                            (methods[2].verdict[k] == planner::Verdict::Blocked ||
-                             methods[3].verdict[k] == planner::Verdict::Blocked);
-  std::printf("\nsegments FCL conservative advancement calls free although fcl::collide finds a colliding sampled pose: %d\n",
-              caFreeSampledBlocked);
+  for (std::size_t m = 4; m < methods.size(); ++m) {
+    int caFreeSampledBlocked = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      caFreeSampledBlocked += methods[m].verdict[k] == planner::Verdict::Free &&
+                              (methods[2].verdict[k] == planner::Verdict::Blocked ||
+                               methods[3].verdict[k] == planner::Verdict::Blocked);
+    std::printf("%ssegments \"%s\" calls free although fcl::collide finds a colliding sampled pose: %d\n",
+                m == 4 ? "\n" : "", methods[m].label, caFreeSampledBlocked);
+  }
   if (totalUndecided) {
     std::printf("FAIL: %d mdd queries hit the iteration limit\n", totalUndecided);
     ++failures;
@@ -200,7 +205,8 @@ int main(int argc, char** argv) {
   {
     std::ofstream csv(segPath);
     csv << "segment,shortcut,from,to,x0,y0,z0,x1,y1,z1,mdd_queries,mdd_contact_t,truth_mink_mdd,mink_mdd_cache,fcl_101,"
-           "fcl_1001,fcl_ca,us_mink_mdd,us_mink_mdd_cache,us_fcl_101,us_fcl_1001,us_fcl_ca\n";
+           "fcl_1001,fcl_ca_libccd,fcl_ca_indep,us_mink_mdd,us_mink_mdd_cache,us_fcl_101,us_fcl_1001,us_fcl_ca_libccd,"
+           "us_fcl_ca_indep\n";
     csv.precision(17);
     for (std::size_t k = 0; k < n; ++k) {
       const planner::Segment& s = scene.segments[k];

@@ -56,8 +56,8 @@ def main():
     styles = [  # drawn in this order, later on top
         ("free (mink mdd)", lambda r: r["truth_mink_mdd"] == "free", dict(color="tab:green", lw=0.5, alpha=0.5)),
         ("blocked (mink mdd)", lambda r: r["truth_mink_mdd"] == "blocked", dict(color="tab:red", lw=0.5, alpha=0.5)),
-        ("blocked, FCL conservative advancement says free",
-         lambda r: r["truth_mink_mdd"] == "blocked" and r["fcl_ca"] == "free", dict(color="tab:purple", lw=1.6)),
+        ("blocked, FCL conservative advancement (libccd) says free",
+         lambda r: r["truth_mink_mdd"] == "blocked" and r["fcl_ca_libccd"] == "free", dict(color="tab:purple", lw=1.6)),
         ("blocked, FCL 1 % sampling says free",
          lambda r: r["truth_mink_mdd"] == "blocked" and r["fcl_101"] == "free", dict(color="tab:orange", lw=2.4)),
     ]
