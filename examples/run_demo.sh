@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # Builds and runs mink_demo (examples/convex_demo.cpp: convex hulls of two meshes),
 # mink_mdd_demo (examples/mdd_demo.cpp: MDD on the paper's ten pairs) and mink_cpd_demo
-# (examples/cpd_demo.cpp: a penalty contact loop on the CPD beside the Euclidean depth) in build-demo/. Needs only CMake,
-# Ninja, a C++17 compiler and Eigen; on Debian/Ubuntu, when run as root, missing ones are
-# installed with apt-get first. Arguments are passed to mink_demo (e.g. --data DIR).
+# (examples/cpd_demo.cpp: a penalty contact loop on the CPD beside the Euclidean depth) in build-demo/,
+# then installs mink into build-demo/planner-prefix and builds and runs examples/planner (a
+# separate project on the installed package: a roadmap's straight-line segments checked
+# with mdd() beside FCL) at its small size in build-demo/planner, with its plot when
+# python3 has matplotlib. Needs CMake, Ninja, a C++17 compiler, Eigen and, for the planner,
+# FCL; on Debian/Ubuntu, when run as root, missing ones are installed with apt-get first.
+# Arguments are passed to mink_demo (e.g. --data DIR).
 #
 # Environment: MINK_BUILD_ROOT (default: the repository) holds build-demo/;
 #              MINK_JOBS (default: nproc) is the build parallelism.
@@ -13,7 +17,7 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 root="${MINK_BUILD_ROOT:-$repo}"
 jobs="${MINK_JOBS:-$(nproc)}"
 
-packages=(cmake ninja-build g++ libeigen3-dev)
+packages=(cmake ninja-build g++ libeigen3-dev libfcl-dev)
 
 # shellcheck source=../cmake/ensure_debian_packages.sh
 source "$repo/cmake/ensure_debian_packages.sh"
@@ -28,3 +32,22 @@ echo
 "$root/build-demo/examples/mink_mdd_demo"
 echo
 "$root/build-demo/examples/mink_cpd_demo"
+echo
+
+# The planner example uses mink as an installed package (README "Using mink from CMake").
+cmake -S "$repo" -B "$root/build-demo/planner-install" -G Ninja \
+  -DMINK_BUILD_TESTS=OFF -DMINK_BUILD_BENCHMARKS=OFF -DMINK_BUILD_EXAMPLES=OFF
+cmake --install "$root/build-demo/planner-install" --prefix "$root/build-demo/planner-prefix"
+cmake -S "$repo/examples/planner" -B "$root/build-demo/planner" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$root/build-demo/planner-prefix"
+cmake --build "$root/build-demo/planner" -j "$jobs"
+"$root/build-demo/planner/planner" --out "$root/build-demo/planner"
+plotter=""
+for py in python3 /usr/bin/python3; do
+  if "$py" -c "import matplotlib" 2>/dev/null; then plotter="$py"; break; fi
+done
+if [[ -n "$plotter" ]]; then
+  "$plotter" "$repo/examples/planner/plot_planner.py" "$root/build-demo/planner"
+else
+  echo "run_demo.sh: no python3 with matplotlib; skipped examples/planner/plot_planner.py"
+fi
