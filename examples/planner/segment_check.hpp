@@ -1,20 +1,14 @@
 // examples/planner/segment_check.hpp — is a straight-line translation of a convex robot
-// through convex obstacles free? One mink::mdd() per obstacle near the segment.
+// through convex obstacles free? One mink::firstContact() (one mdd()) per obstacle near
+// the segment.
 //
 // The robot Q is at its start pose and translates by t·s, t ∈ [0, 1] (s = goal − start,
 // world frame; its orientation does not change along the segment). For one obstacle P,
-// mdd(P, poseP, Q, poseQ, s) looks at the whole line of s: the set of t for which Q moved
-// by t·s meets P is an interval [t_lo, t_hi] (empty when the line of s misses M = P ⊕ −Q),
-// and mdd() reports (README "Minimum directional distance", motion applied to Q along s):
-//   NoContact               the interval is empty                          → free
-//   Separated, parameter p  0 ∉ [t_lo, t_hi]; p is the end nearer 0:
-//                           p > 1   the contact lies beyond the goal         → free
-//                           p < 0   the interval lies behind the start       → free
-//                           0 ≤ p ≤ 1 the robot reaches P on the segment    → blocked
-//   Touching, Penetrating   the robot meets P at the start                   → blocked
-//   IterationLimit          no answer                                        → blocked (the
-//                           conservative call, counted in SegmentCheck::undecided)
-// Contact at the goal (p == 1) counts as blocked, as intersects() counts touching.
+// mink::firstContact(P, poseP, Q, poseQ, s) reads the first contact over t ∈ [0, 1] off one
+// mdd() along s (the set of t for which Q moved by t·s meets P is an interval [t_lo, t_hi]
+// of the line): a contact anywhere on the segment, touching at the start or at the goal
+// included, blocks it; an mdd() IterationLimit counts as a contact at the start (the
+// conservative call, counted in SegmentCheck::undecided).
 // The segment is free iff every obstacle is free. Obstacles whose world AABB misses the
 // AABB swept by the robot cannot meet it (broad phase) and are not queried.
 #pragma once
@@ -109,22 +103,10 @@ inline void nearbyObstacles(const Scene& scene, const Segment& seg, std::vector<
 
 enum class Verdict { Free, Blocked };
 
-/// The rule of the header comment for one obstacle's mdd() result.
-inline Verdict verdictOf(const mink::MddResult<double>& r) {
-  switch (r.status) {
-    case mink::MddStatus::NoContact:
-      return Verdict::Free;
-    case mink::MddStatus::Separated:
-      return (r.parameter >= 0.0 && r.parameter <= 1.0) ? Verdict::Blocked : Verdict::Free;
-    default:  // Touching, Penetrating, IterationLimit
-      return Verdict::Blocked;
-  }
-}
-
 struct SegmentCheck {
   Verdict verdict = Verdict::Free;
   int blocker = -1;    // first obstacle found blocking (-1 when free)
-  double contact = 0;  // its mdd parameter: where along the segment (0..1) the robot meets it
+  double contact = 0;  // where along the segment (0..1) the robot first meets it
   int queries = 0;     // mdd() calls made
   int undecided = 0;   // IterationLimit answers (treated as blocked)
 };
@@ -140,15 +122,16 @@ inline SegmentCheck checkSegmentMdd(const Scene& scene, const Segment& seg,
   const Pose poseQ = scene.robot.poseAt(seg.start);
   for (int i : candidates) {
     const Obstacle& ob = scene.obstacles[static_cast<std::size_t>(i)];
-    const mink::MddResult<double> r =
-        caches ? mink::mdd(ob.shape, ob.pose, scene.robot.shape, poseQ, seg.s, (*caches)[static_cast<std::size_t>(i)])
-               : mink::mdd(ob.shape, ob.pose, scene.robot.shape, poseQ, seg.s);
+    const mink::FirstContact<double> c =
+        caches ? mink::firstContact(ob.shape, ob.pose, scene.robot.shape, poseQ, seg.s,
+                                    (*caches)[static_cast<std::size_t>(i)])
+               : mink::firstContact(ob.shape, ob.pose, scene.robot.shape, poseQ, seg.s);
     ++out.queries;
-    if (r.status == mink::MddStatus::IterationLimit) ++out.undecided;
-    if (verdictOf(r) == Verdict::Blocked) {
+    if (c.mdd.status == mink::MddStatus::IterationLimit) ++out.undecided;
+    if (c.hit) {
       out.verdict = Verdict::Blocked;
       out.blocker = i;
-      out.contact = r.status == mink::MddStatus::Separated ? r.parameter : 0.0;
+      out.contact = c.fraction;
       return out;
     }
   }
