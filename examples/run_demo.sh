@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
 # Builds and runs mink_demo (examples/convex_demo.cpp: convex hulls of two meshes),
 # mink_mdd_demo (examples/mdd_demo.cpp: MDD on the paper's ten pairs) and mink_cpd_demo
-# (examples/cpd_demo.cpp: a penalty contact loop on the CPD beside the Euclidean depth) in build-demo/. Needs only CMake,
-# Ninja, a C++17 compiler and Eigen; on Debian/Ubuntu, when run as root, missing ones are
+# (examples/cpd_demo.cpp: a penalty contact loop on the CPD beside the Euclidean depth) and
+# mink_physics_step (examples/physics_step/: translational CCD, mdd() as the time of impact
+# against FCL and an exact CGAL reference, at its small size; it writes
+# build-demo/physics_step/physics_step.csv, and a PNG when python3 has matplotlib) in
+# build-demo/. Needs CMake, Ninja, a C++17 compiler and Eigen, and for mink_physics_step
+# FCL, libccd, CGAL and GMP; on Debian/Ubuntu, when run as root, missing ones are
 # installed with apt-get first. Arguments are passed to mink_demo (e.g. --data DIR).
 #
 # Environment: MINK_BUILD_ROOT (default: the repository) holds build-demo/;
@@ -13,7 +17,7 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 root="${MINK_BUILD_ROOT:-$repo}"
 jobs="${MINK_JOBS:-$(nproc)}"
 
-packages=(cmake ninja-build g++ libeigen3-dev)
+packages=(cmake ninja-build g++ libeigen3-dev libfcl-dev libccd-dev libcgal-dev libgmp-dev)
 
 # shellcheck source=../cmake/ensure_debian_packages.sh
 source "$repo/cmake/ensure_debian_packages.sh"
@@ -22,9 +26,16 @@ ensure_debian_packages run_demo.sh "${packages[@]}"
 
 cmake -S "$repo" -B "$root/build-demo" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DMINK_BUILD_TESTS=OFF -DMINK_BUILD_BENCHMARKS=OFF -DMINK_BUILD_EXAMPLES=ON
-cmake --build "$root/build-demo" -j "$jobs" --target mink_demo mink_mdd_demo mink_cpd_demo
+cmake --build "$root/build-demo" -j "$jobs" --target mink_demo mink_mdd_demo mink_cpd_demo mink_physics_step
 "$root/build-demo/examples/mink_demo" "$@"
 echo
 "$root/build-demo/examples/mink_mdd_demo"
 echo
 "$root/build-demo/examples/mink_cpd_demo"
+echo
+"$root/build-demo/examples/mink_physics_step" --out "$root/build-demo/physics_step"
+if python3 -c 'import matplotlib' 2>/dev/null; then
+  python3 "$repo/examples/physics_step/plot_physics_step.py" "$root/build-demo/physics_step/physics_step.csv"
+else
+  echo "run_demo.sh: python3 has no matplotlib; no plot of physics_step.csv"
+fi

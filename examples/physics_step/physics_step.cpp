@@ -15,7 +15,7 @@
 // against the exact one. FCL sees the same hull vertices as fcl::Convexd.
 //
 // Usage: mink_physics_step [--full] [--out DIR] [--seed N]
-//   default: 12 bodies, 60 steps (seconds); --full: 300 bodies, 120 steps (minutes: the
+//   default: 12 bodies, 90 steps (seconds); --full: 300 bodies, 120 steps (minutes: the
 //   exact reference, a CGAL hull of up to 4,304 points per query, takes most of the time).
 //   Writes DIR/physics_step.csv (one row per pair query); plot_physics_step.py draws it.
 #include <mink/mink.hpp>
@@ -145,7 +145,7 @@ double quantile(std::vector<double> v, double q) {
 int main(int argc, char** argv) {
   physics_step::SceneConfig config;
   config.bodies = 12;
-  config.steps = 60;
+  config.steps = 90;
   std::string outDir = ".";
   std::string dataDir = MINK_EXAMPLES_DATA_DIR;
   bool full = false;
