@@ -71,6 +71,9 @@ std::vector<physics_step::ShapeDef> bodyShapes(const std::string& dataDir) {
     return p;
   };
   const double r = 0.4;  // m, body size
+  // Pebbles thrown down at 12 m/s move 0.2 m per step: more than their size (8 cm) and the
+  // shelf's thickness (5 cm) together, so a discrete check at the step's end can miss them.
+  out.push_back({"pebble", box(0.04, 0.04, 0.04), 12.0});
   out.push_back({"box", box(0.3, 0.2, 0.15)});
   out.push_back({"cube", box(0.25, 0.25, 0.25)});
   out.push_back({"P1-cone", fitToRadius(mink_test::paperCone(), r)});

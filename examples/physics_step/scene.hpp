@@ -12,7 +12,7 @@
 // (The rule is the same for every method and for the exact reference: see impactFromMdd.)
 //
 // One step of the scene:
-//   1. v += g·dt, d = v·dt for every active body;
+//   1. v += g·dt, d = v·dt for every active body (some are thrown down fast: ShapeDef);
 //   2. sweep: every terrain piece whose AABB meets the body's AABB swept over d is a
 //      candidate pair; the caller's TOI function answers each one (the scene moves by
 //      mink's answer, so every method is asked the same questions);
@@ -42,9 +42,12 @@ namespace physics_step {
 using Vec3 = Eigen::Vector3d;
 
 /// A convex body shape given as points (its hull is taken), shape frame, metres.
+/// launchSpeed > 0 (m/s): bodies of this shape are thrown straight down at that speed
+/// from above the thin shelf (the pieces a discrete check at the step's end can tunnel).
 struct ShapeDef {
   std::string name;
   std::vector<Vec3> points;
+  double launchSpeed = 0.0;
 };
 
 /// Scene parameters. Units: metres, seconds.
@@ -142,6 +145,7 @@ class Scene {
     for (const ShapeDef& s : bodyShapes) {
       bodyShapes_.push_back(mink::ConvexPolyhedron<double>::fromPoints(s.points));
       bodyNames_.push_back(s.name);
+      launchSpeed_.push_back(s.launchSpeed);
     }
     buildTerrain();
     std::mt19937 rng(config.seed);
@@ -156,6 +160,14 @@ class Scene {
       b.pose.translation = Vec3(-w + 2 * w * unit(rng), -w + 2 * w * unit(rng),
                                 config.spawnLow + (config.spawnHigh - config.spawnLow) * unit(rng));
       b.velocity = Vec3(normal(rng), normal(rng), 0.0) * 0.5;
+      const double launch = launchSpeed_[static_cast<std::size_t>(b.shape)];
+      if (launch > 0.0) {
+        const Piece& shelf = pieces_[kShelf];
+        b.pose.translation.x() = shelf.box.lo.x() + 0.5 + (shelf.box.hi.x() - shelf.box.lo.x() - 1.0) * unit(rng);
+        b.pose.translation.y() = shelf.box.lo.y() + 0.5 + (shelf.box.hi.y() - shelf.box.lo.y() - 1.0) * unit(rng);
+        b.pose.translation.z() += shelf.box.hi.z();
+        b.velocity.z() = -launch;
+      }
       bodies_.push_back(b);
     }
     caches_.resize(bodies_.size() * pieces_.size());
@@ -267,7 +279,9 @@ class Scene {
     pieces_.push_back(p);
   }
 
-  // A floor slab (top face at z = 0), two ramps tilted towards it, and a low block.
+  // A floor slab (top face at z = 0), two ramps tilted towards it, a low block and a thin
+  // shelf (5 cm) above the floor.
+  static constexpr std::size_t kShelf = 4;
   void buildTerrain() {
     const double kPi = 3.14159265358979323846;
     addBox("slab", Vec3(10.0, 10.0, 0.5), Vec3(0.0, 0.0, -0.5), Eigen::Matrix3d::Identity());
@@ -277,11 +291,13 @@ class Scene {
            Eigen::AngleAxisd(-20.0 * kPi / 180.0, Vec3::UnitX()).toRotationMatrix());
     addBox("block", Vec3(1.5, 1.5, 0.4), Vec3(3.0, -3.5, 0.4),
            Eigen::AngleAxisd(30.0 * kPi / 180.0, Vec3::UnitZ()).toRotationMatrix());
+    addBox("shelf", Vec3(3.0, 2.4, 0.025), Vec3(-2.5, -5.1, 2.2), Eigen::Matrix3d::Identity());
   }
 
   SceneConfig config_;
   std::vector<mink::ConvexPolyhedron<double>> bodyShapes_, terrainShapes_;
   std::vector<std::string> bodyNames_;
+  std::vector<double> launchSpeed_;
   std::vector<Piece> pieces_;
   std::vector<Body> bodies_;
   std::vector<mink::MddCache<double>> caches_;
