@@ -4,6 +4,7 @@
 Left: |TOI error| against the exact reference (fraction of the step), per method, over the
 queries where both the method and the reference report an impact (cumulative share).
 Right: time per pair query, per method (cumulative share).
+Also prints mink's queries by MddResult::path (Cache, Certificate, Search, None = NoContact...).
 
 Usage: python3 plot_physics_step.py physics_step.csv [out.png]   (default: beside the CSV)
 """
@@ -63,6 +64,12 @@ def main():
     fig.tight_layout()
     fig.savefig(out, dpi=120)
     print("wrote", out)
+
+    # Which step of mdd() answered (MddResult::path): how much the per-pair MddCache serves.
+    print("mink mdd by path: path, queries, median us")
+    for path_name in sorted({r["mink_path"] for r in rows}):
+        us = sorted(float(r["mink_us"]) for r in rows if r["mink_path"] == path_name)
+        print(f"  {path_name:12s} {len(us):7d} {us[len(us) // 2]:9.2f}")
 
 
 if __name__ == "__main__":
