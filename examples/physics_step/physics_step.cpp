@@ -4,6 +4,7 @@
 // Every candidate (terrain piece, body) pair of every sweep is answered by:
 //   mink          mink::mdd(piece, body, s = d) with one MddCache per pair (the scene
 //                 moves by this answer, so all methods get the same questions);
+//   mink no cache the same query with a fresh MddCache (what the pair's cache saves);
 //   fcl-CA/libccd fcl::continuousCollide, CCDC_CONSERVATIVE_ADVANCEMENT, CCDM_TRANS,
 //                 GST_LIBCCD (FCL's default solver), toc_err 1e-4 (FCL's default);
 //   fcl-CA/indep  the same with FCL's own GJK (GST_INDEP);
@@ -94,9 +95,9 @@ std::shared_ptr<fcl::Convexd> fclConvex(const mink::ConvexPolyhedron<double>& sh
   return std::make_shared<fcl::Convexd>(g.fclConvex());
 }
 
-enum Method { kMink, kCaLibccd, kCaIndep, kDiscrete, kExact, kMethods };
-const char* kMethodNames[kMethods] = {"mink mdd", "fcl CA libccd", "fcl CA indep", "fcl discrete",
-                                      "exact (CGAL)"};
+enum Method { kMink, kMinkCold, kCaLibccd, kCaIndep, kDiscrete, kExact, kMethods };
+const char* kMethodNames[kMethods] = {"mink mdd",     "mink no cache", "fcl CA libccd",
+                                      "fcl CA indep", "fcl discrete",  "exact (CGAL)"};
 
 struct Row {
   int step, sweep, body, piece;
@@ -184,15 +185,32 @@ int main(int argc, char** argv) {
   std::printf("), %zu terrain boxes, %d steps of %.4f s, seed %u\n", scene.pieces().size(), config.steps,
               config.dt, config.seed);
 
-  std::vector<Row> rows;
   fcl::ContinuousCollisionRequestd caLibccd, caIndep;
   caLibccd.ccd_solver_type = caIndep.ccd_solver_type = fcl::CCDC_CONSERVATIVE_ADVANCEMENT;
   caLibccd.ccd_motion_type = caIndep.ccd_motion_type = fcl::CCDM_TRANS;
   caLibccd.gjk_solver_type = fcl::GST_LIBCCD;
   caIndep.gjk_solver_type = fcl::GST_INDEP;
 
+  // The scene runs first, driven by mink, and records every pair query; then each method
+  // answers all of them in its own loop, timed call by call. (Timed inside the scene, a
+  // method paid for the CPU caches the previous query's exact reference had flushed.)
+  std::vector<physics_step::PairQuery> queries;
+  std::vector<Impact> driven;
   auto toi = [&](const physics_step::PairQuery& q) {
-    Row row{};
+    physics_step::MinkAnswer a = physics_step::minkToi(q);
+    queries.push_back(q);
+    driven.push_back(a.impact);
+    return a;
+  };
+  const auto wall0 = Clock::now();
+  for (int s = 0; s < config.steps; ++s) scene.step(s, toi);
+  const double wall = std::chrono::duration<double>(Clock::now() - wall0).count();
+
+  std::vector<Row> rows(queries.size());
+  const std::size_t pieces = scene.pieces().size();
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const physics_step::PairQuery& q = queries[i];
+    Row& row = rows[i];
     row.step = q.step;
     row.sweep = q.sweep;
     row.body = q.body;
@@ -200,64 +218,87 @@ int main(int argc, char** argv) {
     const int shape = scene.bodies()[static_cast<std::size_t>(q.body)].shape;
     row.shape = scene.bodyShapeNames()[static_cast<std::size_t>(shape)];
     row.dLength = q.d.norm();
+  }
 
-    auto t0 = Clock::now();
-    physics_step::MinkAnswer a = physics_step::minkToi(q);
-    auto t1 = Clock::now();
-    row.us[kMink] = microseconds(t0, t1);
-    row.answer[kMink] = a.impact;
-    row.minkStatus = statusName(a.result.status);
-    row.minkPath = pathName(a.result.path);
+  // mink, one MddCache per pair replayed in the scene's order (so each query sees the cache
+  // state it saw in the scene), and with a fresh cache per query.
+  long long replayMismatches = 0;
+  {
+    std::vector<mink::MddCache<double>> caches(scene.bodies().size() * pieces);
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      physics_step::PairQuery q = queries[i];
+      q.cache = &caches[static_cast<std::size_t>(q.body) * pieces + static_cast<std::size_t>(q.piece)];
+      const auto t0 = Clock::now();
+      const physics_step::MinkAnswer a = physics_step::minkToi(q);
+      const auto t1 = Clock::now();
+      rows[i].us[kMink] = microseconds(t0, t1);
+      rows[i].answer[kMink] = a.impact;
+      rows[i].minkStatus = statusName(a.result.status);
+      rows[i].minkPath = pathName(a.result.path);
+      replayMismatches += a.impact.hit != driven[i].hit || a.impact.toi != driven[i].toi;
+    }
+  }
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    mink::MddCache<double> fresh;  // cold start: allocates its buffers
+    physics_step::PairQuery q = queries[i];
+    q.cache = &fresh;
+    const auto t0 = Clock::now();
+    const physics_step::MinkAnswer a = physics_step::minkToi(q);
+    const auto t1 = Clock::now();
+    rows[i].us[kMinkCold] = microseconds(t0, t1);
+    rows[i].answer[kMinkCold] = a.impact;
+  }
 
-    const Eigen::Isometry3d tfP = mink_test::toIsometry(q.poseP), tfQ0 = mink_test::toIsometry(q.poseQ);
-    Eigen::Isometry3d tfQ1 = tfQ0;
-    tfQ1.translation() += q.d;
-    const fcl::Convexd* gP = fclTerrain[static_cast<std::size_t>(scene.pieces()[static_cast<std::size_t>(q.piece)].shape)].get();
-    const fcl::Convexd* gQ = fclBodies[static_cast<std::size_t>(shape)].get();
-    for (Method m : {kCaLibccd, kCaIndep}) {
-      fcl::ContinuousCollisionResultd res;
-      t0 = Clock::now();
-      fcl::continuousCollide(gP, tfP, tfP, gQ, tfQ0, tfQ1, m == kCaLibccd ? caLibccd : caIndep, res);
-      t1 = Clock::now();
-      row.us[m] = microseconds(t0, t1);
-      row.answer[m].hit = res.is_collide;
-      row.answer[m].toi = res.is_collide ? res.time_of_contact : 1.0;
-    }
-    {
-      fcl::CollisionRequestd req;
-      fcl::CollisionResultd res;
-      t0 = Clock::now();
-      const bool hit = fcl::collide(gP, tfP, gQ, tfQ1, req, res) > 0;
-      t1 = Clock::now();
-      row.us[kDiscrete] = microseconds(t0, t1);
-      row.answer[kDiscrete].hit = hit;
-      row.answer[kDiscrete].toi = 1.0;  // discrete: no time of impact
-    }
-    {
-      t0 = Clock::now();
-      const mink_test::MinkowskiDifferenceReference ref(physics_step::Scene::worldVertices(*q.P, q.poseP),
-                                                        physics_step::Scene::worldVertices(*q.Q, q.poseQ));
-      const mink_test::MddRefResult r = ref.query(q.d);
-      t1 = Clock::now();
-      row.us[kExact] = microseconds(t0, t1);
-      row.exactStatus = mink_test::toString(r.status);
-      Impact e;
-      if (r.status == mink_test::MddRefStatus::Penetrating || r.status == mink_test::MddRefStatus::Touching) {
-        e.hit = true;
-        e.toi = 0.0;
-      } else if (r.status == mink_test::MddRefStatus::Separated && r.t >= 0 && r.t <= 1) {
-        e.hit = true;
-        e.toi = CGAL::to_double(r.t);
+  for (Method m : {kCaLibccd, kCaIndep, kDiscrete}) {
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      const physics_step::PairQuery& q = queries[i];
+      const int shape = scene.bodies()[static_cast<std::size_t>(q.body)].shape;
+      const Eigen::Isometry3d tfP = mink_test::toIsometry(q.poseP), tfQ0 = mink_test::toIsometry(q.poseQ);
+      Eigen::Isometry3d tfQ1 = tfQ0;
+      tfQ1.translation() += q.d;
+      const fcl::Convexd* gP =
+          fclTerrain[static_cast<std::size_t>(scene.pieces()[static_cast<std::size_t>(q.piece)].shape)].get();
+      const fcl::Convexd* gQ = fclBodies[static_cast<std::size_t>(shape)].get();
+      if (m == kDiscrete) {
+        fcl::CollisionRequestd req;
+        fcl::CollisionResultd res;
+        const auto t0 = Clock::now();
+        const bool hit = fcl::collide(gP, tfP, gQ, tfQ1, req, res) > 0;
+        const auto t1 = Clock::now();
+        rows[i].us[m] = microseconds(t0, t1);
+        rows[i].answer[m].hit = hit;
+        rows[i].answer[m].toi = 1.0;  // discrete: no time of impact
+      } else {
+        fcl::ContinuousCollisionResultd res;
+        const auto t0 = Clock::now();
+        fcl::continuousCollide(gP, tfP, tfP, gQ, tfQ0, tfQ1, m == kCaLibccd ? caLibccd : caIndep, res);
+        const auto t1 = Clock::now();
+        rows[i].us[m] = microseconds(t0, t1);
+        rows[i].answer[m].hit = res.is_collide;
+        rows[i].answer[m].toi = res.is_collide ? res.time_of_contact : 1.0;
       }
-      row.answer[kExact] = e;
     }
-    rows.push_back(row);
-    return a;
-  };
+  }
 
-  const auto wall0 = Clock::now();
-  for (int s = 0; s < config.steps; ++s) scene.step(s, toi);
-  const double wall = std::chrono::duration<double>(Clock::now() - wall0).count();
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const physics_step::PairQuery& q = queries[i];
+    const auto t0 = Clock::now();
+    const mink_test::MinkowskiDifferenceReference ref(physics_step::Scene::worldVertices(*q.P, q.poseP),
+                                                      physics_step::Scene::worldVertices(*q.Q, q.poseQ));
+    const mink_test::MddRefResult r = ref.query(q.d);
+    const auto t1 = Clock::now();
+    rows[i].us[kExact] = microseconds(t0, t1);
+    rows[i].exactStatus = mink_test::toString(r.status);
+    Impact e;
+    if (r.status == mink_test::MddRefStatus::Penetrating || r.status == mink_test::MddRefStatus::Touching) {
+      e.hit = true;
+      e.toi = 0.0;
+    } else if (r.status == mink_test::MddRefStatus::Separated && r.t >= 0 && r.t <= 1) {
+      e.hit = true;
+      e.toi = CGAL::to_double(r.t);
+    }
+    rows[i].answer[kExact] = e;
+  }
 
   int resting = 0, active = 0;
   for (const auto& b : scene.bodies()) {
@@ -272,9 +313,9 @@ int main(int argc, char** argv) {
   }
   std::printf("%zu pair queries (%lld impacts by the exact reference, %lld of them overlapping at the start), "
               "%lld impacts applied, %lld IterationLimit; %d of %d bodies on the scene at the end below z = 1 m "
-              "and slower than 0.5 m/s; %.1f s wall time\n\n",
+              "and slower than 0.5 m/s; scene %.1f s wall time; mink's replay differs from the scene in %lld\n\n",
               rows.size(), exactHits, penetratingAtStart, scene.counters().impacts, scene.counters().iterationLimits,
-              resting, active, wall);
+              resting, active, wall, replayMismatches);
 
   std::printf("%-14s %12s %12s %8s %8s %8s %14s %14s\n", "method", "median us", "p90 us", "impacts", "missed",
               "false", "max |TOI err|", "median |err|");
@@ -303,7 +344,7 @@ int main(int argc, char** argv) {
   const std::string csvPath = (std::filesystem::path(outDir) / "physics_step.csv").string();
   std::ofstream csv(csvPath);
   csv << "step,sweep,body,piece,shape,d_length,exact_status,mink_status,mink_path";
-  const char* keys[kMethods] = {"mink", "fcl_ca_libccd", "fcl_ca_indep", "fcl_discrete", "exact"};
+  const char* keys[kMethods] = {"mink", "mink_cold", "fcl_ca_libccd", "fcl_ca_indep", "fcl_discrete", "exact"};
   for (int m = 0; m < kMethods; ++m) csv << ',' << keys[m] << "_hit," << keys[m] << "_toi," << keys[m] << "_us";
   csv << '\n';
   csv.precision(17);

@@ -19,6 +19,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 METHODS = [
     ("mink", "mink mdd"),
+    ("mink_cold", "mink mdd, no cache"),
     ("fcl_ca_libccd", "FCL CA (libccd)"),
     ("fcl_ca_indep", "FCL CA (indep)"),
     ("fcl_discrete", "FCL discrete"),
