@@ -49,7 +49,8 @@ def main():
         missed = sum(1 for r in rows if r[key + "_hit"] == "0" and r["exact_hit"] == "1")
         if errs:
             share = [(i + 1) / len(errs) for i in range(len(errs))]
-            ax_err.plot(errs, share, label=f"{label} ({missed} missed)")
+            style = "--" if key == "mink_cold" else "-"  # on top of "mink" when they agree
+            ax_err.plot(errs, share, style, label=f"{label} ({missed} missed)")
     ax_err.set_xscale("log")
     ax_err.set_xlabel("|TOI error| (fraction of the step), vs exact")
     ax_err.set_ylabel("share of impacts found")
