@@ -24,6 +24,8 @@
 
 // mdd: the minimum directional distance between two convex polyhedra.
 #include "mink/mdd/mdd.hpp"
+#include "mink/mdd/mdd_exact.hpp"
+#include "mink/mdd/first_contact.hpp"
 
 // mesh: TriangleMesh<T> (closed, non-convex, any genus), its sphere tree, exact triangle
 // tests, point location, self-intersection and mesh-mesh overlap.

@@ -6,6 +6,8 @@
 
 #include "mink/core/types.hpp"
 
+#include <Eigen/Geometry>
+
 namespace {
 
 template <class T>
@@ -43,6 +45,45 @@ TYPED_TEST(PoseTest, ApplyIsRotationThenTranslation) {
   for (int k = 0; k < 3; ++k) EXPECT_TRUE(got[k] == expected[k]) << "k=" << k;
   // Translation is applied after the rotation: a pure translation moves the origin to t.
   EXPECT_TRUE(pose.apply(mink::Vec3<T>::Zero()) == pose.translation);
+}
+
+// Eigen isometries in and out. Reference: Eigen's own product iso * x, and the exact
+// entries of the transform (conversion float -> double and double -> Gmpq is exact).
+TEST(PoseIsometry, FromIsometryAppliesLikeEigen) {
+  const Eigen::Isometry3d iso = Eigen::Translation3d(1.5, -2.0, 0.25) *
+                                Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -1).normalized());
+  const auto pose = mink::Pose<double>::fromIsometry(iso);
+  EXPECT_TRUE(pose.rotation == iso.linear());
+  EXPECT_TRUE(pose.translation == iso.translation());
+  const Eigen::Vector3d x(0.3, -4.0, 2.5);
+  EXPECT_LE((pose.apply(x) - iso * x).norm(), 1e-15 * 8.0);
+  // And back: the same numbers.
+  const Eigen::Isometry3d back = pose.toIsometry();
+  EXPECT_TRUE(back.matrix() == iso.matrix());
+  // An Affine3d whose linear part is a rotation is accepted as well.
+  const Eigen::Affine3d aff(iso.matrix());
+  EXPECT_TRUE(mink::Pose<double>::fromIsometry(aff).rotation == pose.rotation);
+}
+
+TEST(PoseIsometry, OtherScalarsConvertEntryByEntry) {
+  const Eigen::Isometry3f isoF = Eigen::Translation3f(0.1f, 2.0f, -3.0f) *
+                                 Eigen::AngleAxisf(1.1f, Eigen::Vector3f::UnitZ());
+  const auto pd = mink::Pose<double>::fromIsometry(isoF);
+  const auto pe = mink::Pose<CGAL::Gmpq>::fromIsometry(isoF);
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(pd.rotation(r, c), static_cast<double>(isoF.linear()(r, c)));
+      EXPECT_TRUE(pe.rotation(r, c) == CGAL::Gmpq(static_cast<double>(isoF.linear()(r, c))));
+    }
+    EXPECT_EQ(pd.translation[r], static_cast<double>(isoF.translation()[r]));
+    EXPECT_TRUE(pe.translation[r] == CGAL::Gmpq(static_cast<double>(isoF.translation()[r])));
+  }
+  // A float query pose from a double isometry rounds each entry once.
+  const Eigen::Isometry3d isoD = isoF.cast<double>();
+  const auto pf = mink::Pose<float>::fromIsometry(isoD);
+  EXPECT_TRUE(pf.rotation == isoF.linear());
+  const auto back = pf.toIsometry();
+  EXPECT_TRUE(back.matrix() == isoF.matrix());
 }
 
 }  // namespace

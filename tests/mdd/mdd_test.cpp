@@ -14,6 +14,7 @@
 
 #include "support/gjk_reference.hpp"
 #include "support/mdd_reference.hpp"
+#include "support/mdd_status.hpp"
 #include "support/exact_placement.hpp"
 #include "support/paper_shapes.hpp"
 
@@ -25,19 +26,6 @@ using mink::Pose;
 using mink_test::Rational;
 using mink_test::Vec3r;
 using Vec3d = Eigen::Vector3d;
-
-MddStatus toMink(mink_test::MddRefStatus s) {
-  switch (s) {
-    case mink_test::MddRefStatus::Separated:
-      return MddStatus::Separated;
-    case mink_test::MddRefStatus::Touching:
-      return MddStatus::Touching;
-    case mink_test::MddRefStatus::Penetrating:
-      return MddStatus::Penetrating;
-    default:
-      return MddStatus::NoContact;
-  }
-}
 
 ConvexPolyhedron<Rational> exactHull(const std::vector<Vec3d>& pts) {
   return ConvexPolyhedron<Rational>::fromPoints(mink_test::toExact(pts));
@@ -70,7 +58,7 @@ double checkDouble(const mink::MddResult<double>& r, const mink_test::MddRefResu
   if (r.status == MddStatus::NoContact || r.status == MddStatus::IterationLimit) return 0.0;
   // Status must match whenever the exact answer is clear of the touching tolerance.
   if (std::abs(ref.translation) > 1e-9) {
-    EXPECT_EQ(r.status, toMink(ref.status)) << ref.translation;
+    EXPECT_EQ(r.status, mink_test::toMinkStatus(ref.status)) << ref.translation;
   }
   double err = std::abs(r.translation - ref.translation);
   if (ref.tie) err = std::min(err, std::abs(r.translation + ref.translation));
@@ -166,7 +154,7 @@ TEST(MddPaper, ExactRationalBitForBit) {
         const auto r = mink::mdd(P, Pose<Rational>(), Q, poseQ, s);
         const auto e = ref.query(s, offset);
         SCOPED_TRACE("seed " + std::to_string(seed) + " step " + std::to_string(step) + " k " + std::to_string(k));
-        ASSERT_EQ(r.status, toMink(e.status));
+        ASSERT_EQ(r.status, mink_test::toMinkStatus(e.status));
         if (e.status != mink_test::MddRefStatus::NoContact) {
           if (e.tie)
             EXPECT_TRUE(r.parameter == e.t || r.parameter == -e.t);
@@ -272,7 +260,7 @@ TEST(MddDegenerate, BoxesDoubleAndExact) {
     Pose<Rational> poseQx;
     poseQx.translation = mink_test::toExact(bc.offsetQ);
     const auto rx = mink::mdd(exactHull(ptsP), Pose<Rational>(), exactHull(ptsQ), poseQx, mink_test::toExact(bc.s));
-    EXPECT_EQ(rx.status, toMink(e.status));
+    EXPECT_EQ(rx.status, mink_test::toMinkStatus(e.status));
     if (e.status != mink_test::MddRefStatus::NoContact) {
       if (e.tie)
         EXPECT_TRUE(rx.parameter == e.t || rx.parameter == -e.t);
@@ -310,7 +298,7 @@ TEST(MddDegenerate, RandomSmallShapesExact) {
     poseQ.translation = mink_test::toExact(off);
     const auto r = mink::mdd(P, Pose<Rational>(), Q, poseQ, mink_test::toExact(s));
     SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial));
-    ASSERT_EQ(r.status, toMink(e.status));
+    ASSERT_EQ(r.status, mink_test::toMinkStatus(e.status));
     if (e.status != mink_test::MddRefStatus::NoContact) {
       if (e.tie)
         EXPECT_TRUE(r.parameter == e.t || r.parameter == -e.t);

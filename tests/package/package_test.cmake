@@ -1,9 +1,10 @@
-# Run by the package.consumer test (see CMakeLists.txt here) as
+# Run by the package.consumer and package.planner tests (see CMakeLists.txt here) as
 #   cmake -DMINK_SOURCE_DIR=... -DCONSUMER_SOURCE_DIR=... -DWORK_DIR=... -DGENERATOR=...
-#         [-DCXX_COMPILER=...] [-DEIGEN3_DIR=...] -P package_test.cmake
+#         [-DCXX_COMPILER=...] [-DEIGEN3_DIR=...] [-DCONSUMER_EXECUTABLE=name] -P package_test.cmake
 # Steps: configure mink alone (tests, benchmarks, examples off) and install it into
 # WORK_DIR/prefix; check the installed files; build the consumer project against the
-# prefix only; run it. Any failure stops the script with a message (non-zero exit).
+# prefix only; run its executable CONSUMER_EXECUTABLE (default: consumer) in its build
+# directory. Any failure stops the script with a message (non-zero exit).
 cmake_minimum_required(VERSION 3.20)
 
 foreach(var MINK_SOURCE_DIR CONSUMER_SOURCE_DIR WORK_DIR GENERATOR)
@@ -82,6 +83,15 @@ step("configure consumer" ${CMAKE_COMMAND} -S "${CONSUMER_SOURCE_DIR}" -B "${con
      -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_FIND_USE_SYSTEM_PACKAGE_REGISTRY=OFF)
 step("build consumer" ${CMAKE_COMMAND} --build "${consumer_build}")
 
-# 4. Run it: it checks its own results and exits non-zero on a mismatch.
-step("run consumer" "${consumer_build}/consumer")
+# 4. Run it (in its build directory, where it may write files): it checks its own results
+#    and exits non-zero on a mismatch.
+if(NOT CONSUMER_EXECUTABLE)
+  set(CONSUMER_EXECUTABLE consumer)
+endif()
+execute_process(COMMAND "${consumer_build}/${CONSUMER_EXECUTABLE}" WORKING_DIRECTORY "${consumer_build}"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE step_output ERROR_VARIABLE step_output)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "package test: run ${CONSUMER_EXECUTABLE} failed (${rc}):\n${step_output}")
+endif()
+message(STATUS "package test: run ${CONSUMER_EXECUTABLE}: ok")
 message(STATUS "consumer output:\n${step_output}")

@@ -1059,6 +1059,59 @@ TYPED_TEST(FromPointsRejects, Degenerate) {
 // ---------------------------------------------------------------------------------
 // HullOptions: an explicit tolerance is used as given; bad tolerances are rejected.
 
+// ---------------------------------------------------------------------------------
+// fromPoints / fromMesh on another scalar's coordinates: the same shape as converting
+// first. Reference: the hull of the converted points, built by the ordinary overload;
+// float to double and double to Gmpq are exact conversions, so vertices must be equal.
+
+TEST(FromOtherScalar, FloatPointsGiveTheHullOfTheirDoubleValues) {
+  std::mt19937 rng(20261203u);
+  std::uniform_real_distribution<float> u(-3.0f, 3.0f);
+  std::vector<Vec3<float>> pf;
+  for (int i = 0; i < 200; ++i) pf.emplace_back(u(rng), u(rng), u(rng));
+  std::vector<Vec3<double>> pd;
+  for (const auto& p : pf) pd.push_back(p.cast<double>());
+  const auto a = ConvexPolyhedron<double>::fromPoints(pf);
+  const auto b = ConvexPolyhedron<double>::fromPoints(pd);
+  ASSERT_EQ(a.numVertices(), b.numVertices());
+  ASSERT_EQ(a.numFaces(), b.numFaces());
+  for (int v = 0; v < a.numVertices(); ++v) {
+    EXPECT_TRUE(a.vertex(v) == b.vertex(v)) << "vertex " << v;
+    EXPECT_EQ(a.inputIndex(v), b.inputIndex(v)) << "vertex " << v;
+  }
+  // Rejections still name the input index.
+  auto bad = pf;
+  bad[17][1] = std::numeric_limits<float>::quiet_NaN();
+  expectInvalidInput([&] { (void)ConvexPolyhedron<double>::fromPoints(bad); }, {"point 17", "non-finite"},
+                     "float NaN at point 17");
+}
+
+TEST(FromOtherScalar, DoublePointsGiveAnExactShapeAndFloatMeshesADoubleOne) {
+  // Exactly representable non-dyadic-free numbers: 0.1 is not 1/10 in double, and the
+  // exact shape must hold the double's value, not 1/10.
+  const std::vector<Vec3<double>> box = {{0, 0, 0}, {0.1, 0, 0}, {0, 0.1, 0}, {0.1, 0.1, 0},
+                                         {0, 0, 0.3}, {0.1, 0, 0.3}, {0, 0.1, 0.3}, {0.1, 0.1, 0.3}};
+  const auto e = ConvexPolyhedron<Q>::fromPoints(box);
+  ASSERT_EQ(e.numVertices(), 8);
+  ASSERT_EQ(e.numFaces(), 6);
+  for (int v = 0; v < 8; ++v) {
+    const auto& x = box[static_cast<std::size_t>(e.inputIndex(v))];
+    for (int k = 0; k < 3; ++k) EXPECT_TRUE(e.vertex(v)[k] == Q(x[k])) << "vertex " << v << " k=" << k;
+  }
+  EXPECT_FALSE(Q(0.1) == Q(1, 10));
+
+  const std::vector<Vec3<float>> cube = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                         {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const std::vector<std::vector<int>> quads = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                               {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  const auto m = ConvexPolyhedron<double>::fromMesh(cube, quads);
+  EXPECT_EQ(m.numVertices(), 8);
+  EXPECT_EQ(m.numFaces(), 6);
+  auto inward = quads;
+  for (auto& f : inward) std::reverse(f.begin(), f.end());
+  EXPECT_THROW((void)ConvexPolyhedron<double>::fromMesh(cube, inward), mink::InvalidInput);
+}
+
 TEST(HullOptions, ExplicitToleranceRejectsNearlyDegenerateInput) {
   // The tolerance only decides what counts as degenerate input; the hull is exact.
   const unsigned seed = 6001u;

@@ -36,6 +36,8 @@ struct CentreOfDuality {
   /// Interior: a point of the line, strictly inside M (frame of P).
   Vec3<T> c = Vec3<T>::Zero();
   /// Boundary: a direction orthogonal to s whose supporting plane of M contains the line.
+  /// Outside: a direction orthogonal to s along which M's support is below 0 (the line
+  /// is strictly beyond that supporting plane); the hints are then M's support there.
   Vec3<T> w = Vec3<T>::Zero();
 };
 
@@ -93,6 +95,11 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
     out.w = lift(d);
     return out;
   };
+  auto outside = [&](const Pt2<T>& d) {
+    out.kind = Kind::Outside;
+    out.w = lift(d);
+    return out;
+  };
 
   const Vec3<T> x0 = F.P().interiorPoint() - (F.R() * F.Q().interiorPoint() + F.t());
   const Pt2<T> v0 = proj(x0);
@@ -107,7 +114,7 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
   Pt2<T> v1 = proj(X1);
   {
     const T h = detail::dot2(r, v1);  // support value; the origin's value is 0
-    if (h < T(0)) return out;         // Outside
+    if (h < T(0)) return outside(r);
     if (h == T(0)) return boundary(r);
   }
   // Origin on the segment v0–v1: inside (v1 is in M', v0 interior).
@@ -127,7 +134,7 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
   Pt2<T> v2 = proj(X2);
   {
     const T h = detail::dot2(n, v2);
-    if (h < T(0)) return out;
+    if (h < T(0)) return outside(n);
     if (h == T(0)) return boundary(n);
   }
   if (side < T(0)) {
@@ -147,7 +154,7 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
       const Vec3<T> X = support(nn);
       const Pt2<T> v = proj(X);
       const T h = detail::dot2(nn, v);
-      if (h < T(0)) return out;
+      if (h < T(0)) return outside(nn);
       if (h == T(0)) return boundary(nn);
       v2 = v1;
       X2 = X1;
@@ -161,7 +168,7 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
       const Vec3<T> X = support(nn);
       const Pt2<T> v = proj(X);
       const T h = detail::dot2(nn, v);
-      if (h < T(0)) return out;
+      if (h < T(0)) return outside(nn);
       if (h == T(0)) return boundary(nn);
       v1 = v2;
       X1 = X2;
@@ -185,7 +192,7 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
     const Vec3<T> X3 = support(np);
     const Pt2<T> v3 = proj(X3);
     const T h = detail::dot2(np, v3);
-    if (h < T(0)) return out;  // the whole of M' is short of the origin
+    if (h < T(0)) return outside(np);  // the whole of M' is short of the origin
     // h == 0: the supporting line of M' along np passes through the origin (then, as
     // the origin is not strictly inside, it is on M' only if on that edge or vertex).
     if (h == T(0) || !(detail::dot2(np, detail::sub2(v3, v1)) > T(0))) return boundary(np);

@@ -1050,7 +1050,18 @@ MddResult<T> mddChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, cons
   cache.vertexP = hp;
   cache.vertexQ = hq;
   using Kind = typename CentreOfDuality<T>::Kind;
-  if (cd.kind == Kind::Outside) return noContact();
+  if (cd.kind == Kind::Outside) {
+    // The separating direction and its support vertices: why the line misses (and what
+    // mddExact certifies a NoContact with).
+    res.normal = RPt.transpose() * cd.w;  // w . (RPt s) == (RPt^T w) . s: still orthogonal to s
+    if constexpr (!ScalarTraits<T>::isExact) {
+      const T len = res.normal.stableNorm();
+      if (len > T(0)) res.normal /= len;
+    }
+    res.featureP = hp;
+    res.featureQ = hq;
+    return noContact();
+  }
   if (cd.kind == Kind::Limit) return fromChord();
   if (cd.kind == Kind::Boundary) return fromGrazing(cd.w);
   // Interior: c = alpha * s strictly inside M.

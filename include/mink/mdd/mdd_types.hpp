@@ -87,7 +87,11 @@ struct MddResult {
   /// `translation` and the witnesses stay accurate.
   T parameter = T(0);
   /// Outward normal of the face of M hit by the line (world frame), unit for inexact T;
-  /// for exact T unnormalised (exact direction).
+  /// for exact T unnormalised (exact direction). NoContact found by the centre of
+  /// duality (the usual case): a direction orthogonal to s (up to rounding for inexact T)
+  /// along which all of M lies strictly below the line, a separating direction; then
+  /// featureP / featureQ are the vertices of P and of Q supporting M there (P's maximum
+  /// along normal, Q's minimum). Otherwise zero and -1.
   Vec3<T> normal = Vec3<T>::Zero();
   /// Contact witnesses (world frame): witnessP on P, witnessQ on Q at its *given* pose,
   /// with witnessP - witnessQ == parameter * s: moving Q by that motion brings witnessQ
@@ -95,8 +99,8 @@ struct MddResult {
   Vec3<T> witnessP = Vec3<T>::Zero();
   Vec3<T> witnessQ = Vec3<T>::Zero();
   MddFaceType faceType = MddFaceType::None;
-  int featureP = -1;  ///< face / vertex / edge id on P, per faceType
-  int featureQ = -1;  ///< vertex / face / edge id on Q, per faceType
+  int featureP = -1;  ///< face / vertex / edge id on P, per faceType (NoContact: see normal)
+  int featureQ = -1;  ///< vertex / face / edge id on Q, per faceType (NoContact: see normal)
   /// Faces of M evaluated, per phase (summed over the d_max and d_min searches).
   int visitedFV = 0, visitedVF = 0, visitedEE = 0;
   /// True when a scan quadratic in the sizes ran: the local search's answer failed its

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -84,6 +85,23 @@ class ConvexPolyhedron {
   static ConvexPolyhedron fromMesh(const std::vector<Vec3<T>>& vertices,
                                    const std::vector<std::vector<int>>& faces,
                                    const HullOptions<T>& options = {});
+
+  /// fromPoints and fromMesh on coordinates of another scalar type U (float points for a
+  /// double shape, double points for an exact one): each coordinate is converted by
+  /// static_cast first, exactly when T represents every U (float to double or long double,
+  /// any binary floating point to an exact rational), rounded otherwise (double to float).
+  /// The hull is then the exact hull of the converted numbers.
+  template <class U, class = std::enable_if_t<!std::is_same<U, T>::value>>
+  static ConvexPolyhedron fromPoints(const std::vector<Vec3<U>>& points,
+                                     const HullOptions<T>& options = {}) {
+    return fromPoints(convertPoints(points), options);
+  }
+  template <class U, class = std::enable_if_t<!std::is_same<U, T>::value>>
+  static ConvexPolyhedron fromMesh(const std::vector<Vec3<U>>& vertices,
+                                   const std::vector<std::vector<int>>& faces,
+                                   const HullOptions<T>& options = {}) {
+    return fromMesh(convertPoints(vertices), faces, options);
+  }
 
   // ---- counts (V - E + F == 2) ----
   int numVertices() const { return static_cast<int>(vertices_.size()); }
@@ -152,6 +170,13 @@ class ConvexPolyhedron {
   /// The average of the vertices: a point strictly inside the polyhedron (exact for
   /// exact T), made once at construction so queries never pay O(n) for one.
   const Vec3<T>& interiorPoint() const { return interior_; }
+  /// True when the shape is exactly the convex hull of its vertices, as numbers of T:
+  /// always for fromPoints (an exact hull), and for fromMesh with exact T (validated
+  /// without slack). A fromMesh shape in floating point is convex within its tolerance
+  /// only. Exact questions about the shape (mddExact) are exact questions about the hull
+  /// of its vertices; where this is true, a vertex that no neighbour beats along a
+  /// direction is exactly the support vertex.
+  bool isExactHull() const { return exactHull_; }
   /// False when, for inexact T, some edge's two face normals are opposite within
   /// defaults::kMddParallelEdgeFactor eps (|n_f + n_g| below it: an interior dihedral
   /// angle of about 1e-14 rad in double or less, possible only with a hull tolerance of
@@ -178,6 +203,14 @@ class ConvexPolyhedron {
   }
   template <class U>
   friend struct detail::PolyhedronBuilder;
+  template <class U>
+  static std::vector<Vec3<T>> convertPoints(const std::vector<Vec3<U>>& points) {
+    std::vector<Vec3<T>> out;
+    out.reserve(points.size());
+    for (const Vec3<U>& p : points)
+      out.emplace_back(static_cast<T>(p.x()), static_cast<T>(p.y()), static_cast<T>(p.z()));
+    return out;
+  }
 
   std::vector<Vec3<T>> vertices_;
   std::vector<int> inputIndex_;
@@ -191,6 +224,7 @@ class ConvexPolyhedron {
   T extent_ = T(0);
   Vec3<T> interior_ = Vec3<T>::Zero();
   bool edgesResolved_ = true;
+  bool exactHull_ = false;
   std::shared_ptr<detail::DerivedSlots> derived_;
 };
 

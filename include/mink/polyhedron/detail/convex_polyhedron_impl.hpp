@@ -144,8 +144,10 @@ struct PolyhedronBuilder {
     const Vec3<T>& o = pts[loop[0]];
     for (std::size_t i = 2; i < loop.size(); ++i)
       if (width(o, pts[loop[1]], pts[loop[i]]) > width(o, pts[loop[1]], pts[loop[k]])) k = i;
-    for (int v : loop)
-      if (orient3d(o, pts[loop[1]], pts[loop[k]], pts[v]) != 0) return false;
+    // The three spanning corners are on it by definition (and would each cost the exact
+    // stage, since their determinant is exactly zero).
+    for (std::size_t i = 2; i < loop.size(); ++i)
+      if (i != k && orient3d(o, pts[loop[1]], pts[loop[k]], pts[loop[i]]) != 0) return false;
     return true;
   }
 
@@ -255,6 +257,7 @@ struct PolyhedronBuilder {
           if (!(n.dot(rawN[nb]) > T(0))) continue;
           bool coplanar = true;
           for (int v : polys[nb]) {
+            if (v == S[0] || v == S[1] || v == S[k2]) continue;  // spanning corners: on the plane
             if (orient3d(a, b, c, pts[v]) != 0) {
               coplanar = false;
               break;
@@ -423,8 +426,13 @@ struct PolyhedronBuilder {
     T m = T(0);
     if constexpr (!ScalarTraits<T>::isExact)
       for (const auto& p : points) m = std::max(m, p.cwiseAbs().maxCoeff());
-    return atUnitScale(points, m, options,
-                       [&](const std::vector<Vec3<T>>& pts, const HullOptions<T>& opt) { return build(pts, opt, who); });
+    Poly P = atUnitScale(points, m, options, [&](const std::vector<Vec3<T>>& pts, const HullOptions<T>& opt) {
+      return build(pts, opt, who);
+    });
+    // Quickhull decides every side exactly and faces merge only when exactly coplanar;
+    // the rescaling is by powers of two, exact both ways on the vertices it keeps.
+    P.exactHull_ = true;
+    return P;
   }
 
   /// build(points, options), on a copy scaled to unit size by a power of two (exact both
@@ -484,9 +492,13 @@ struct PolyhedronBuilder {
       for (const Loop& L : faces)
         for (int v : L)
           if (v >= 0 && v < static_cast<int>(verts.size())) m = std::max(m, verts[v].cwiseAbs().maxCoeff());
-    return atUnitScale(verts, m, options, [&](const std::vector<Vec3<T>>& pts, const HullOptions<T>& opt) {
+    Poly P = atUnitScale(verts, m, options, [&](const std::vector<Vec3<T>>& pts, const HullOptions<T>& opt) {
       return meshBody(pts, faces, opt);
     });
+    // Exact T with the default tolerance (0) validates planarity and convexity with no
+    // slack; floating point, or a tolerance given, within the tolerance.
+    P.exactHull_ = ScalarTraits<T>::isExact && P.tolerance_ == T(0);
+    return P;
   }
 
   static Poly meshBody(const std::vector<Vec3<T>>& verts, const std::vector<Loop>& faces,

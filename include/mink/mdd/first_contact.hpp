@@ -1,0 +1,72 @@
+// mink/mdd/first_contact.hpp — firstContact: the first contact of a translation over a
+// bounded motion (a physics step's time of impact, a planner's straight segment), read
+// off one MDD query along the motion.
+//
+// With M = P ⊕ −Q and [t_lo, t_hi] the chord of M on the line of d (DESIGN.md, eq. (1)),
+// Q moved by τ·d meets P (closed sets) exactly for τ in [t_lo, t_hi]. Over τ in [0, 1]
+// the first contact is therefore:
+//   Penetrating or Touching (0 in [t_lo, t_hi])  -> at τ = 0;
+//   Separated with parameter t in (0, 1]          -> at τ = t (t = t_lo);
+//   Separated with t > 1 (beyond the motion), t < 0 (t = t_hi: the shapes are moving
+//   apart), or NoContact (the line misses M)      -> none.
+// The MDD's parameter is exact for exact scalars, so the verdict is too.
+#pragma once
+
+#include "mink/mdd/mdd.hpp"
+
+namespace mink {
+
+/// Result of firstContact. Frames: world.
+template <class T>
+struct FirstContact {
+  /// P and Q share a point for some τ in [0, 1] (touching counts). An MDD query that hit
+  /// its iteration cap (mdd.status == IterationLimit; not seen on well-formed input) is
+  /// reported as a contact at τ = 0: the conservative answer for a motion check.
+  bool hit = false;
+  /// The first such τ, as a fraction of d (0 when P and Q already touch or overlap); 1
+  /// when there is no contact.
+  T fraction = T(1);
+  /// The MDD along d itself: status, normal of the face of M hit (at a contact, the
+  /// contact normal pointing from P towards Q's side, as in MddResult), witnesses, and
+  /// the signed parameter beyond the motion when there is no contact.
+  MddResult<T> mdd;
+};
+
+/// The first contact of Q translated by τ·d, τ in [0, 1] (d in the world frame, any
+/// non-zero length: the whole motion, e.g. relative velocity × time step, or a segment's
+/// end minus its start), P fixed at poseP. `cache` as for mdd(): one per pair of shapes
+/// for coherent motion. Throws InvalidInput as mdd() does (zero or non-finite d, ...).
+template <class T>
+FirstContact<T> firstContact(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                             const Pose<T>& poseQ, const Vec3<T>& d, MddCache<T>& cache,
+                             const MddOptions<T>& options = {}) {
+  FirstContact<T> out;
+  out.mdd = mdd(P, poseP, Q, poseQ, d, cache, options);
+  switch (out.mdd.status) {
+    case MddStatus::Penetrating:
+    case MddStatus::Touching:
+    case MddStatus::IterationLimit:
+      out.hit = true;
+      out.fraction = T(0);
+      break;
+    case MddStatus::Separated:
+      if (out.mdd.parameter > T(0) && !(out.mdd.parameter > T(1))) {
+        out.hit = true;
+        out.fraction = out.mdd.parameter;
+      }
+      break;
+    case MddStatus::NoContact:
+      break;
+  }
+  return out;
+}
+
+/// firstContact() without a coherence cache.
+template <class T>
+FirstContact<T> firstContact(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                             const Pose<T>& poseQ, const Vec3<T>& d, const MddOptions<T>& options = {}) {
+  MddCache<T> cache;
+  return firstContact(P, poseP, Q, poseQ, d, cache, options);
+}
+
+}  // namespace mink
