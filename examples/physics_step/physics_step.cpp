@@ -11,7 +11,7 @@
 //   fcl-discrete  fcl::collide at the end of the motion only (blind to tunnelling);
 //   exact         MinkowskiDifferenceReference (tests/support/mdd_reference.hpp): the exact
 //                 hull of all vertex differences (CGAL, Gmpq), the line of d clipped exactly.
-// The impact rule (scene.hpp, impactFromMdd) turns each answer into "impact at t in [0,1]"
+// The impact rule (scene.hpp, mink::firstContact) turns each answer into "impact at t in [0,1]"
 // or "no impact"; missed / false impacts and |TOI error| (fraction of the step) are counted
 // against the exact one. FCL sees the same hull vertices as fcl::Convexd.
 //
@@ -253,7 +253,7 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < queries.size(); ++i) {
       const physics_step::PairQuery& q = queries[i];
       const int shape = scene.bodies()[static_cast<std::size_t>(q.body)].shape;
-      const Eigen::Isometry3d tfP = mink_test::toIsometry(q.poseP), tfQ0 = mink_test::toIsometry(q.poseQ);
+      const Eigen::Isometry3d tfP = q.poseP.toIsometry(), tfQ0 = q.poseQ.toIsometry();
       Eigen::Isometry3d tfQ1 = tfQ0;
       tfQ1.translation() += q.d;
       const fcl::Convexd* gP =

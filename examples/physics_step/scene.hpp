@@ -5,12 +5,12 @@
 //
 // Why MDD is a time of impact: for a body Q moving by d over a step against a static piece
 // P (rotations held fixed over the step), Q moved by t·d overlaps P iff t·d ∈ M = P ⊕ −Q.
-// mdd(P, Q, s = d) returns the t of smallest |t| with t·d on ∂M (`parameter`), so:
-//   Separated or Touching with 0 <= parameter <= 1  → impact at t = parameter,
-//   Penetrating                                     → impact at t = 0 (overlap at the start),
+// mdd(P, Q, s = d) returns the t of smallest |t| with t·d on ∂M (`parameter`), and
+// mink::firstContact (mdd/first_contact.hpp) reads the step's impact off it:
+//   Separated with 0 < parameter <= 1   → impact at t = parameter,
+//   Penetrating or Touching             → impact at t = 0 (overlap or contact at the start),
 //   anything else (parameter < 0 or > 1, NoContact) → no impact in this step.
-// (The rule is the same for every method and for the exact reference: see impactFromMdd.)
-//
+// The program and the test apply the same rule to the exact reference's answer.
 // One step of the scene:
 //   1. v += g·dt, d = v·dt for every active body (some are thrown down fast: ShapeDef);
 //   2. sweep: every terrain piece whose AABB meets the body's AABB swept over d is a
@@ -84,20 +84,6 @@ struct Impact {
   double toi = 1.0;   // fraction of the motion d at first contact, valid iff hit
 };
 
-/// The rule of the header comment on an MDD answer (status, parameter as a multiple of d).
-inline Impact impactFromMdd(mink::MddStatus status, double parameter) {
-  Impact out;
-  if (status == mink::MddStatus::Penetrating) {
-    out.hit = true;
-    out.toi = 0.0;
-  } else if ((status == mink::MddStatus::Separated || status == mink::MddStatus::Touching) &&
-             parameter >= 0.0 && parameter <= 1.0) {
-    out.hit = true;
-    out.toi = parameter;
-  }
-  return out;
-}
-
 /// One candidate pair of one sweep: static piece P (terrain) and moving body Q.
 struct PairQuery {
   int step = 0, sweep = 0;  // sweep 0: the step's motion, 1: the slide after an impact
@@ -116,9 +102,11 @@ struct MinkAnswer {
 };
 
 inline MinkAnswer minkToi(const PairQuery& q) {
+  const mink::FirstContact<double> c = mink::firstContact(*q.P, q.poseP, *q.Q, q.poseQ, q.d, *q.cache);
   MinkAnswer a;
-  a.result = mink::mdd(*q.P, q.poseP, *q.Q, q.poseQ, q.d, *q.cache);
-  a.impact = impactFromMdd(a.result.status, a.result.parameter);
+  a.result = c.mdd;
+  a.impact.hit = c.hit;
+  a.impact.toi = c.fraction;
   return a;
 }
 
