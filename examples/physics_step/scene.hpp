@@ -11,6 +11,7 @@
 //   Penetrating or Touching             → impact at t = 0 (overlap or contact at the start),
 //   anything else (parameter < 0 or > 1, NoContact) → no impact in this step.
 // The program and the test apply the same rule to the exact reference's answer.
+//
 // One step of the scene:
 //   1. v += g·dt, d = v·dt for every active body (some are thrown down fast: ShapeDef);
 //   2. sweep: every terrain piece whose AABB meets the body's AABB swept over d is a
