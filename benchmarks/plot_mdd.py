@@ -185,7 +185,10 @@ def plot_precision(d):
     rows, comments = read(os.path.join(d, "mdd_precision.csv"))
     if not rows:
         return
-    types = [("float", "tab:red"), ("double", "tab:blue"), ("long_double", "tab:green"), ("exact_gmpq", "tab:purple")]
+    # certified: mddExact<Gmpq> on the double shapes and poses, exact for those numbers;
+    # its error against the reference (exact rotation) is the rotation's rounding to double.
+    types = [("float", "tab:red"), ("double", "tab:blue"), ("long_double", "tab:green"), ("certified", "tab:orange"),
+             ("exact_gmpq", "tab:purple")]
     errs = [r["max_err"] for r in rows if r["section"] == "precision" and r["max_err"] > 0]
     floor = min(errs) / 100 if errs else 1e-18
     fig, ax = plt.subplots(figsize=(9, 6.5))
