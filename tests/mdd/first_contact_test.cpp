@@ -28,6 +28,7 @@ using Vec3d = Eigen::Vector3d;
 
 struct Expected {
   bool hit = false;
+  bool approaching = false;  // the interiors overlap just after the first contact
   Rational fraction = Rational(1);
   Rational margin = Rational(1);  // distance of the verdict from a boundary case, in τ
 };
@@ -37,9 +38,13 @@ Expected expected(const mink_test::MddRefResult& e) {
   if (!e.lineMeetsM) return x;
   // Clear of the cases that rounding may decide either way: t_lo near 0 or 1, t_hi near 0.
   auto absr = [](const Rational& a) { return a < 0 ? Rational(-a) : a; };
-  x.margin = std::min({absr(e.tLo), absr(Rational(e.tLo - 1)), absr(e.tHi)});
+  x.margin = std::min({absr(e.tLo), absr(Rational(e.tLo - 1)), absr(e.tHi), Rational(e.tHi - e.tLo)});
   x.hit = e.tHi >= 0 && e.tLo <= 1;
   if (x.hit) x.fraction = e.tLo > 0 ? e.tLo : Rational(0);
+  // The interiors overlap right after the first contact iff the line enters M's interior
+  // there: not when the chord ends at the contact (t_hi == max(t_lo, 0)) or runs along a
+  // facet plane.
+  x.approaching = x.hit && !e.lineInFacetPlane && e.tHi > x.fraction;
   return x;
 }
 
@@ -72,6 +77,7 @@ TEST(FirstContact, PaperPairsAgainstExactChord) {
            << mink_test::paperShapeName(pair.second) << " k " << k;
       ASSERT_EQ(r.hit, x.hit) << what.str() << " mdd status " << static_cast<int>(r.mdd.status);
       EXPECT_NEAR(r.fraction, CGAL::to_double(x.fraction), 1e-12) << what.str();
+      EXPECT_EQ(r.approaching, x.approaching) << what.str();
       (x.hit ? hits : misses) += 1;
       ++checked;
     }
@@ -105,16 +111,39 @@ TEST(FirstContact, ExactRationalsAtTheBoundaries) {
       {Vec3r(Rational(1), Rational(0), Rational(0)), Vec3r(Rational(0), Rational(0), Rational(5)),
        "overlapping at the start"},
       {Vec3r(Rational(4), Rational(0), Rational(0)), Vec3r(Rational(-2), Rational(2), Rational(0)),
+       "a single point of contact at the end: edges meeting edges"},
+      {Vec3r(Rational(4), Rational(0), Rational(0)), Vec3r(Rational(-2), Rational(3), Rational(0)),
        "line misses"},
+      {Vec3r(Rational(4), Rational(0), Rational(2)), Vec3r(Rational(-3), Rational(0), Rational(0)),
+       "sliding onto the top face's plane: touching along it"},
       {Vec3r(Rational(5), Rational(0), Rational(0)), Vec3r(Rational(-2), Rational(0), Rational(0)),
-       "stops short"}};
+       "stops short"},
+      {Vec3r(Rational(1, 2), Rational(0), Rational(2)), Vec3r(Rational(3), Rational(1), Rational(0)),
+       "resting on the top face, sliding along it"},
+      {Vec3r(Rational(2), Rational(2), Rational(0)), Vec3r(Rational(-1), Rational(-1), Rational(0)),
+       "touching along an edge, moving in"},
+      {Vec3r(Rational(2), Rational(2), Rational(2)), Vec3r(Rational(1), Rational(-1), Rational(0)),
+       "touching at a vertex, moving across"}};
   for (const Case& c : cases) {
     Pose<Rational> poseQ;
     poseQ.translation = c.t;
     const auto r = mink::firstContact(P, Pose<Rational>(), P, poseQ, c.d);
     const Expected x = expected(ref.query(c.d, c.t));
+    ASSERT_TRUE(r.hit || !r.approaching) << c.name;
     EXPECT_EQ(r.hit, x.hit) << c.name;
     EXPECT_EQ(r.fraction, x.fraction) << c.name;
+    EXPECT_EQ(r.approaching, x.approaching) << c.name;
+    // The same numbers in double (all exact there) give the same verdicts.
+    std::vector<Vec3d> cubeD;
+    for (const Vec3r& v : cube) cubeD.emplace_back(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
+    const auto PD = ConvexPolyhedron<double>::fromPoints(cubeD);
+    Pose<double> poseQD;
+    poseQD.translation = Vec3d(CGAL::to_double(c.t.x()), CGAL::to_double(c.t.y()), CGAL::to_double(c.t.z()));
+    const Vec3d dD(CGAL::to_double(c.d.x()), CGAL::to_double(c.d.y()), CGAL::to_double(c.d.z()));
+    const auto rd = mink::firstContact(PD, Pose<double>(), PD, poseQD, dD);
+    EXPECT_EQ(rd.hit, x.hit) << c.name << " (double)";
+    EXPECT_EQ(rd.approaching, x.approaching) << c.name << " (double)";
+    EXPECT_NEAR(rd.fraction, CGAL::to_double(x.fraction), 1e-15) << c.name << " (double)";
   }
 }
 

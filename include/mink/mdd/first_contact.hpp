@@ -5,7 +5,8 @@
 // With M = P ⊕ −Q and [t_lo, t_hi] the chord of M on the line of d (DESIGN.md, eq. (1)),
 // Q moved by τ·d meets P (closed sets) exactly for τ in [t_lo, t_hi]. Over τ in [0, 1]
 // the first contact is therefore:
-//   Penetrating or Touching (0 in [t_lo, t_hi])  -> at τ = 0;
+//   Penetrating or Touching (0 in [t_lo, t_hi])  -> at τ = 0 (`approaching` tells a touching
+//                                                  pair moving in from one moving away);
 //   Separated with parameter t in (0, 1]          -> at τ = t (t = t_lo);
 //   Separated with t > 1 (beyond the motion), t < 0 (t = t_hi: the shapes are moving
 //   apart), or NoContact (the line misses M)      -> none.
@@ -26,6 +27,14 @@ struct FirstContact {
   /// The first such τ, as a fraction of d (0 when P and Q already touch or overlap); 1
   /// when there is no contact.
   T fraction = T(1);
+  /// With a hit: does the motion push Q into P there (their interiors overlap just after
+  /// `fraction`)? True for an overlap at the start; false when the motion only grazes P
+  /// (the line of d meets M = P ⊕ −Q but not its interior: mdd.path == Grazing) and, for a
+  /// pair touching at the start, when d points away from P or along the contact (by the
+  /// sign of d against mdd.normal, the face of M at the origin) — contacts a physics
+  /// engine need not treat as impacts. Exact for exact scalars; for floating point,
+  /// touching is within the MDD's touchTolerance and this is the side d points to.
+  bool approaching = false;
   /// The MDD along d itself: status, normal of the face of M hit (at a contact, the
   /// contact normal pointing from P towards Q's side, as in MddResult), witnesses, and
   /// the signed parameter beyond the motion when there is no contact.
@@ -42,16 +51,28 @@ FirstContact<T> firstContact(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
                              const MddOptions<T>& options = {}) {
   FirstContact<T> out;
   out.mdd = mdd(P, poseP, Q, poseQ, d, cache, options);
+  // A line that meets M but not its interior (in a supporting plane of M: a single point,
+  // an edge or a facet of contact) is answered by the grazing step: Q then only touches P.
+  const bool grazing = out.mdd.path == MddPath::Grazing;
   switch (out.mdd.status) {
     case MddStatus::Penetrating:
-    case MddStatus::Touching:
     case MddStatus::IterationLimit:
+      out.hit = out.approaching = true;
+      out.fraction = T(0);
+      break;
+    case MddStatus::Touching:
+      // 0 is an end of M's chord on the line: the face reported is the one the line
+      // crosses there (or, for a line in a facet plane, that facet). Normal·d < 0: the
+      // line enters M at 0 (t_lo = 0 < t_hi); > 0: it leaves (t_hi = 0); 0: it slides
+      // along the facet.
       out.hit = true;
       out.fraction = T(0);
+      out.approaching = !grazing && out.mdd.normal.dot(d) < T(0);
       break;
     case MddStatus::Separated:
       if (out.mdd.parameter > T(0) && !(out.mdd.parameter > T(1))) {
         out.hit = true;
+        out.approaching = !grazing;
         out.fraction = out.mdd.parameter;
       }
       break;

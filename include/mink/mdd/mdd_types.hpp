@@ -87,7 +87,8 @@ struct MddResult {
   /// `translation` and the witnesses stay accurate.
   T parameter = T(0);
   /// Outward normal of the face of M hit by the line (world frame), unit for inexact T;
-  /// for exact T unnormalised (exact direction). NoContact found by the centre of
+  /// for exact T unnormalised (exact direction). As a contact normal it points from P
+  /// towards Q: moving Q along +normal separates the two. NoContact found by the centre of
   /// duality (the usual case): a direction orthogonal to s (up to rounding for inexact T)
   /// along which all of M lies strictly below the line, a separating direction; then
   /// featureP / featureQ are the vertices of P and of Q supporting M there (P's maximum
