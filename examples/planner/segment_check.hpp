@@ -38,16 +38,11 @@ struct Aabb {
   Aabb merged(const Aabb& o) const { return {lo.cwiseMin(o.lo), hi.cwiseMax(o.hi)}; }
 };
 
-/// World AABB of `shape` placed by `pose` (from its vertices; exact up to the rounding of
-/// pose.apply, which is far below the gaps a broad phase needs to resolve).
+/// World AABB of `shape` placed by `pose`: ConvexPolyhedron::worldBounds (six support
+/// queries, padded by the rounding of pose.apply), not a scan of every vertex.
 inline Aabb worldAabb(const Polyhedron& shape, const Pose& pose) {
-  Aabb box{Vec3::Constant(1e300), Vec3::Constant(-1e300)};
-  for (const Vec3& v : shape.vertices()) {
-    const Vec3 w = pose.apply(v);
-    box.lo = box.lo.cwiseMin(w);
-    box.hi = box.hi.cwiseMax(w);
-  }
-  return box;
+  const auto bounds = shape.worldBounds(pose);
+  return {bounds.first, bounds.second};
 }
 
 /// A convex obstacle: its hull in its own frame, its pose and its world AABB.

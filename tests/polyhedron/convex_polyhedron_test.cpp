@@ -26,6 +26,7 @@
 #include <vector>
 
 #include <CGAL/Gmpq.h>
+#include <Eigen/Geometry>
 #include <CGAL/Gmpz.h>
 
 #include "mink/polyhedron/convex_polyhedron.hpp"
@@ -1110,6 +1111,45 @@ TEST(FromOtherScalar, DoublePointsGiveAnExactShapeAndFloatMeshesADoubleOne) {
   auto inward = quads;
   for (auto& f : inward) std::reverse(f.begin(), f.end());
   EXPECT_THROW((void)ConvexPolyhedron<double>::fromMesh(cube, inward), mink::InvalidInput);
+}
+
+// worldBounds against a scan of every placed vertex: every vertex inside, and each side
+// within the padding of the extreme vertex along it (exact for Gmpq).
+TEST(WorldBounds, HoldEveryPlacedVertexAndTouchTheExtremes) {
+  std::mt19937 rng(20261205u);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Vec3<double>> pts;
+    const int n = 8 + trial * 10;
+    for (int i = 0; i < n; ++i) pts.emplace_back(u(rng) * 3, u(rng), u(rng) * 0.2);
+    const auto P = ConvexPolyhedron<double>::fromPoints(pts);
+    mink::Pose<double> pose;
+    pose.rotation = Eigen::AngleAxisd(3.0 * u(rng), Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
+    pose.translation = Eigen::Vector3d(u(rng), u(rng), u(rng)) * 100.0;
+    const auto [lo, hi] = P.worldBounds(pose);
+    Vec3<double> scanLo = Vec3<double>::Constant(1e300), scanHi = Vec3<double>::Constant(-1e300);
+    for (const auto& v : P.vertices()) {
+      const Vec3<double> w = pose.apply(v);
+      scanLo = scanLo.cwiseMin(w);
+      scanHi = scanHi.cwiseMax(w);
+    }
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_LE(lo[i], scanLo[i]) << "trial " << trial << " axis " << i;
+      EXPECT_GE(hi[i], scanHi[i]) << "trial " << trial << " axis " << i;
+      EXPECT_LE(scanLo[i] - lo[i], 1e-12) << "trial " << trial << " axis " << i;
+      EXPECT_LE(hi[i] - scanHi[i], 1e-12) << "trial " << trial << " axis " << i;
+    }
+  }
+  // Exact: a unit cube turned a quarter about z and moved: the box is exact.
+  std::vector<Vec3<Q>> cube;
+  for (int i = 0; i < 8; ++i) cube.emplace_back(Q((i & 1) ? 1 : 0), Q((i & 2) ? 2 : 0), Q((i & 4) ? 3 : 0));
+  const auto C = ConvexPolyhedron<Q>::fromPoints(cube);
+  mink::Pose<Q> pose;
+  pose.rotation << Q(0), Q(-1), Q(0), Q(1), Q(0), Q(0), Q(0), Q(0), Q(1);
+  pose.translation = Vec3<Q>(Q(1, 2), Q(0), Q(-1));
+  const auto [lo, hi] = C.worldBounds(pose);
+  EXPECT_TRUE(lo == Vec3<Q>(Q(-3, 2), Q(0), Q(-1)));
+  EXPECT_TRUE(hi == Vec3<Q>(Q(1, 2), Q(1), Q(2)));
 }
 
 TEST(HullOptions, ExplicitToleranceRejectsNearlyDegenerateInput) {

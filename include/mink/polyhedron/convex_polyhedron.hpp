@@ -193,6 +193,29 @@ class ConvexPolyhedron {
   /// Same by scanning every vertex (reference and tiny shapes). Ties: lowest index.
   int supportBruteForce(const Vec3<T>& direction) const;
 
+  /// Axis-aligned bounding box (lo, hi) of the shape placed at `pose`, in the world frame
+  /// (a broad phase's box): the six extreme vertices along the rows of the rotation, by
+  /// hill-climbing (support), not a scan of every vertex. Exact for exact T; for floating
+  /// point it holds every vertex's world position as pose.apply rounds it (each side is
+  /// padded by 8 eps (|translation| + extent), the rounding of that product and more).
+  std::pair<Vec3<T>, Vec3<T>> worldBounds(const Pose<T>& pose) const {
+    Vec3<T> lo, hi;
+    int hint = 0;
+    for (int i = 0; i < 3; ++i) {
+      const Vec3<T> d = pose.rotation.row(i).transpose();
+      hint = support(d, hint);
+      hi[i] = pose.apply(vertices_[hint])[i];
+      lo[i] = pose.apply(vertices_[support(Vec3<T>(-d), hint)])[i];
+      if constexpr (!ScalarTraits<T>::isExact) {
+        using std::abs;
+        const T pad = T(8) * ScalarTraits<T>::epsilon() * (abs(pose.translation[i]) + extent_);
+        hi[i] += pad;
+        lo[i] -= pad;
+      }
+    }
+    return {lo, hi};
+  }
+
   /// Slots for lazily built derived structures (see detail::DerivedSlots).
   detail::DerivedSlots& derivedSlots() const { return *derived_; }
 
