@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "physics_step/exact_impact.hpp"
 #include "physics_step/scene.hpp"
 #include "support/gjk_reference.hpp"
 #include "support/mdd_reference.hpp"
@@ -282,21 +283,12 @@ int main(int argc, char** argv) {
 
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const physics_step::PairQuery& q = queries[i];
+    mink_test::MddRefResult r;
     const auto t0 = Clock::now();
-    const mink_test::MinkowskiDifferenceReference ref(physics_step::Scene::worldVertices(*q.P, q.poseP),
-                                                      physics_step::Scene::worldVertices(*q.Q, q.poseQ));
-    const mink_test::MddRefResult r = ref.query(q.d);
+    const Impact e = physics_step::exactImpact(q, &r);
     const auto t1 = Clock::now();
     rows[i].us[kExact] = microseconds(t0, t1);
     rows[i].exactStatus = mink_test::toString(r.status);
-    Impact e;
-    if (r.status == mink_test::MddRefStatus::Penetrating || r.status == mink_test::MddRefStatus::Touching) {
-      e.hit = true;
-      e.toi = 0.0;
-    } else if (r.status == mink_test::MddRefStatus::Separated && r.t >= 0 && r.t <= 1) {
-      e.hit = true;
-      e.toi = CGAL::to_double(r.t);
-    }
     rows[i].answer[kExact] = e;
   }
 

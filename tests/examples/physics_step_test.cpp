@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "physics_step/exact_impact.hpp"
 #include "physics_step/scene.hpp"
 #include "support/mdd_reference.hpp"
 #include "support/paper_shapes.hpp"
@@ -37,21 +38,6 @@ std::vector<physics_step::ShapeDef> shapes() {
           {"P2-cylinder", scaled(mink_test::paperCylinder(), 0.08)}};
 }
 
-Impact exactImpact(const physics_step::PairQuery& q) {
-  const mink_test::MinkowskiDifferenceReference ref(physics_step::Scene::worldVertices(*q.P, q.poseP),
-                                                    physics_step::Scene::worldVertices(*q.Q, q.poseQ));
-  const mink_test::MddRefResult r = ref.query(q.d);
-  Impact e;
-  if (r.status == mink_test::MddRefStatus::Penetrating || r.status == mink_test::MddRefStatus::Touching) {
-    e.hit = true;
-    e.toi = 0.0;
-  } else if (r.status == mink_test::MddRefStatus::Separated && r.t >= 0 && r.t <= 1) {
-    e.hit = true;
-    e.toi = CGAL::to_double(r.t);
-  }
-  return e;
-}
-
 TEST(PhysicsStep, MddToiMatchesExactReference) {
   physics_step::SceneConfig config;
   config.bodies = 9;
@@ -67,7 +53,7 @@ TEST(PhysicsStep, MddToiMatchesExactReference) {
   for (int s = 0; s < config.steps; ++s) {
     scene.step(s, [&](const physics_step::PairQuery& q) {
       const physics_step::MinkAnswer a = physics_step::minkToi(q);
-      const Impact e = exactImpact(q);
+      const Impact e = physics_step::exactImpact(q);
       ++queries;
       impacts += e.hit;
       clear += !e.hit;
