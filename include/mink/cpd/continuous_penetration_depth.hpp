@@ -322,7 +322,10 @@ class PenetrationSearch {
       // The exit is the free end of its bisection: outside M by at most its width. (Finer
       // rungs, factors 2^(1/4), cost more: the depth is most often the exit's own length,
       // so every rung below it is built empty, which is cheap, but not free.)
-      const T rho = k > 0 ? std::ldexp(d0, -k) : d0 * T(1.0625);
+      // Never below the smallest normal number: on a scene of denormal size (boxes
+      // 1e-308 across) d0 / 2^k underflows to 0, and a larger ball is still sound (it
+      // holds every point of ∂M within its radius), only less tight.
+      const T rho = std::max(k > 0 ? std::ldexp(d0, -k) : d0 * T(1.0625), std::numeric_limits<T>::min());
       const MinkowskiPatch<T>& patch = sum_.update(poseA, poseB, o, rho);
       ++res.iterations;
       res.radius = rho;
