@@ -132,8 +132,8 @@ int orientDiff(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& q0, const Ve
     const T perm = abs(u[0]) * (abs(v[1] * w[2]) + abs(v[2] * w[1])) +
                    abs(u[1]) * (abs(v[2] * w[0]) + abs(v[0] * w[2])) +
                    abs(u[2]) * (abs(v[0] * w[1]) + abs(v[1] * w[0]));
-    const T eps = std::numeric_limits<T>::epsilon() / T(2);
-    const T dm = std::numeric_limits<T>::denorm_min();
+    constexpr T eps = std::numeric_limits<T>::epsilon() / T(2);
+    constexpr T dm = std::numeric_limits<T>::min();  // not denorm_min: see orient3d
     const T bound =
         (T(7) + T(56) * eps) * eps * perm + dm * (T(2) * (abs(u[0]) + abs(u[1]) + abs(u[2])) + T(4));
     if (det > bound) return 1;

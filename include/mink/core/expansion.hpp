@@ -67,17 +67,26 @@ class IntervalOf {
   Interval& operator-=(const Interval& b) { return *this = *this - b; }
 
  private:
-  // Outward by at least one ulp: the exact result is within half an ulp of the rounded x,
-  // and x − (|x|·2^(1−p) + the least subnormal) rounds to at most x − ulp(x) / 2 (the
-  // product is exact, a power-of-two scaling). Infinities stay (x − x would be NaN).
+  // Outward by at least one ulp: the exact result is within half an ulp of the rounded x
+  // (or half the least subnormal below the normal range), and x − (|x|·2^(1−p) + the
+  // least normal number) rounds to at most x − ulp(x) / 2 (the product is exact, a
+  // power-of-two scaling). The least normal rather than the least subnormal: as sound,
+  // and no denormal sum, which costs a microcode assist on x86. A result rounded to ±∞
+  // may be finite: its inner bound is ±max; its outer bound stays infinite.
   static F down(F x) {
-    if (!(std::abs(x) <= std::numeric_limits<F>::max())) return x;
-    return x - (std::abs(x) * std::numeric_limits<F>::epsilon() + std::numeric_limits<F>::denorm_min());
+    if (!(std::abs(x) <= kMax)) return x == std::numeric_limits<F>::infinity() ? kMax : x;
+    return x - (std::abs(x) * kEps + kTiny);
   }
   static F up(F x) {
-    if (!(std::abs(x) <= std::numeric_limits<F>::max())) return x;
-    return x + (std::abs(x) * std::numeric_limits<F>::epsilon() + std::numeric_limits<F>::denorm_min());
+    if (!(std::abs(x) <= kMax)) return x == -std::numeric_limits<F>::infinity() ? -kMax : x;
+    return x + (std::abs(x) * kEps + kTiny);
   }
+  // Constants of F made at compile time: under -frounding-math (which CGAL asks of its
+  // users) GCC would otherwise convert the limits' long double literals at run time on
+  // the x87 unit (for denorm_min a denormal result: about a microsecond per operation).
+  static constexpr F kMax = std::numeric_limits<F>::max();
+  static constexpr F kEps = std::numeric_limits<F>::epsilon();
+  static constexpr F kTiny = std::numeric_limits<F>::min();
   F lo_ = F(0), hi_ = F(0);
 };
 using Interval = IntervalOf<double>;
@@ -99,6 +108,17 @@ class ExpansionOf {
     F s = F(0);
     for (F x : c_) s += x;
     return s;
+  }
+
+  /// The value in an exact type Q constructible from F (a rational): the expansion is
+  /// compressed first (Shewchuk's Compress: the same value in few components, usually
+  /// two or three), so that only a few additions run in Q.
+  template <class Q>
+  Q exactValue() const {
+    const std::vector<F> h = compressed();
+    Q value(0);
+    for (F x : h) value += Q(x);
+    return value;
   }
 
   friend Expansion operator+(const Expansion& a, const Expansion& b) {
@@ -165,6 +185,33 @@ class ExpansionOf {
       if (y != F(0)) h.push_back(y);
     }
     if (q != F(0)) h.push_back(q);
+  }
+  // The same value with non-adjacent components: a pass from the largest down folds each
+  // component into a running sum, keeping what that sum cannot hold; a pass back up
+  // renormalises what was kept.
+  std::vector<F> compressed() const {
+    std::vector<F> g(c_);
+    if (g.size() < 2) return g;
+    std::size_t bottom = g.size() - 1;
+    F big = g[bottom], sum1, low;
+    for (std::size_t i = g.size() - 1; i-- > 0;) {
+      fastTwoSum(big, g[i], sum1, low);
+      if (low != F(0)) {
+        g[bottom--] = sum1;
+        big = low;
+      } else {
+        big = sum1;
+      }
+    }
+    std::size_t top = 0;
+    for (std::size_t i = bottom + 1; i < g.size(); ++i) {
+      fastTwoSum(g[i], big, sum1, low);
+      if (low != F(0)) g[top++] = low;
+      big = sum1;
+    }
+    g[top++] = big;
+    g.resize(top);
+    return g;
   }
   // r := this * b exactly (Scale-Expansion, zeros eliminated).
   void scaled(F b, Expansion& r) const {

@@ -44,7 +44,7 @@ int exactVolumeSign(const std::vector<std::array<int, 3>>& tris, const std::vect
     }
   }
   const F n = F(6) * F(static_cast<double>(which.size()));
-  const F bound = (n + F(2)) * std::numeric_limits<F>::epsilon() * mag + F(3) * n * std::numeric_limits<F>::denorm_min();
+  const F bound = (n + F(2)) * std::numeric_limits<F>::epsilon() * mag + F(3) * n * std::numeric_limits<F>::min();  // a normal bound: see orient3d
   if (sum > bound) return 1;
   if (-sum > bound) return -1;
   // Exact expansion.

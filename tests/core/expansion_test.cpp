@@ -1,0 +1,101 @@
+// tests/core/expansion_test.cpp — the filter's interval and the exact expansion against
+// CGAL::Gmpq: an interval encloses the exact value of every operation, whatever the
+// magnitudes (zeros, denormals, huge); an expansion's exactValue is the exact value.
+#include "mink/core/expansion.hpp"
+
+#include <gtest/gtest.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace {
+
+using mink::detail::Expansion;
+using mink::detail::Interval;
+using Q = CGAL::Gmpq;
+
+bool encloses(const Interval& i, const Q& x) {
+  auto le = [](double a, const Q& b) { return std::isinf(a) ? a < 0 : Q(a) <= b; };
+  auto ge = [](double a, const Q& b) { return std::isinf(a) ? a > 0 : Q(a) >= b; };
+  return le(i.lo(), x) && ge(i.hi(), x);
+}
+
+// Numbers over the whole range: zeros, denormals, tiny, unit, huge, both signs.
+double randomNumber(std::mt19937& rng) {
+  std::uniform_int_distribution<int> kind(0, 5), exponent(-1074, 1023);
+  std::uniform_real_distribution<double> mant(0.5, 1.0);
+  const double sign = rng() & 1 ? 1.0 : -1.0;
+  switch (kind(rng)) {
+    case 0:
+      return 0.0;
+    case 1:
+      return sign * std::numeric_limits<double>::denorm_min() * double(1 + rng() % 1000);
+    case 2:
+      return sign * std::ldexp(mant(rng), exponent(rng));
+    default:
+      return sign * std::ldexp(mant(rng), static_cast<int>(rng() % 40) - 20);
+  }
+}
+
+// Sums, differences and products of random values, chained: each interval result
+// encloses the exact result of the same operations on its exact inputs.
+TEST(Interval, EnclosesEveryOperationOverTheRange) {
+  std::mt19937 rng(7);
+  int decided = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const double a = randomNumber(rng), b = randomNumber(rng), c = randomNumber(rng), d = randomNumber(rng);
+    const Interval ia(a), ib(b), ic(c), id(d);
+    const Q qa(a), qb(b), qc(c), qd(d);
+    const Interval r1 = ia * ib - ic * id, r2 = (ia + ib) * (ic - id), r3 = r1 * r2 + ia;
+    const Q e1 = qa * qb - qc * qd, e2 = (qa + qb) * (qc - qd), e3 = e1 * e2 + qa;
+    ASSERT_TRUE(encloses(r1, e1)) << a << " " << b << " " << c << " " << d;
+    ASSERT_TRUE(encloses(r2, e2)) << a << " " << b << " " << c << " " << d;
+    ASSERT_TRUE(encloses(r3, e3)) << a << " " << b << " " << c << " " << d;
+    if (r1.excludesZero()) {
+      ++decided;
+      EXPECT_EQ(r1.certainSign(), CGAL::sign(e1));
+    }
+    if (ic.excludesZero()) {
+      const Q e4 = qa / qc;
+      EXPECT_TRUE(encloses(ia / ic, e4));
+    }
+  }
+  EXPECT_GT(decided, 1000);  // the filter decides the generic signs
+}
+
+// A tie is never decided: a value that is exactly 0 gives an interval holding 0.
+TEST(Interval, NeverDecidesAnExactZero) {
+  const Interval x(0.1), y(0.3), z(0.7);
+  const Interval zero = x * y * z - z * y * x;
+  EXPECT_FALSE(zero.excludesZero());
+  EXPECT_EQ(zero.certainSign(), 0);
+}
+
+// exactValue: the compressed expansion, summed in Q, equals the value of the same
+// polynomial evaluated in Q; its sign is the expansion's.
+TEST(Expansion, ExactValueMatchesRationalArithmetic) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<double> v(6);
+    for (double& x : v) x = std::ldexp(unit(rng), static_cast<int>(rng() % 200) - 100);
+    Expansion e(0.0);
+    Q q(0);
+    // A degree-6 sum of products with cancellation: (v0 v1 v2 − v3 v4 v5)(v0 + v3) + v1 v4.
+    e = (Expansion(v[0]) * v[1] * v[2] - Expansion(v[3]) * v[4] * v[5]) * (Expansion(v[0]) + v[3]) +
+        Expansion(v[1]) * v[4];
+    q = (Q(v[0]) * v[1] * v[2] - Q(v[3]) * v[4] * v[5]) * (Q(v[0]) + v[3]) + Q(v[1]) * v[4];
+    ASSERT_EQ(e.exactValue<Q>(), q) << trial;
+    EXPECT_EQ(e.sign(), CGAL::sign(q));
+  }
+  // Exact cancellation to 0 and a value of one component.
+  const Expansion zero = Expansion(0.1) * 0.3 - Expansion(0.3) * 0.1;
+  EXPECT_EQ(zero.exactValue<Q>(), Q(0));
+  EXPECT_EQ(Expansion(0.25).exactValue<Q>(), Q(0.25));
+}
+
+}  // namespace
