@@ -11,7 +11,9 @@
 //   1. the hierarchy, when the shape is large enough to get one;
 //   2. the support seeds (26 scans, O(n); small shapes' cold support queries start there).
 // Nothing else is cached per shape: MddCache holds per-pair state, and mddExact's exact
-// fallback converts the shapes per call (it depends on the caller's rational type).
+// fallback converts the shapes per call (it depends on the caller's rational type). The
+// non-convex meshes of CPD have their own overload, prepare(TriangleMesh) in
+// cpd/convex_map.hpp (their convex maps).
 //
 // Thread-safety: every slot is filled under std::call_once, so prepare() may run in
 // several threads at once and beside queries on the same shape; each structure is built
