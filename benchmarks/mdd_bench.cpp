@@ -1117,11 +1117,15 @@ void prepareSection(const Options& opt) {
       prepAgain.time([&] { gSink = gSink + (mink::prepare(P) != nullptr); });
       firstPrepared.time([&] { query(P); });
     }
-    auto cell = [](const Times& t) {
-      char b[80];
-      std::snprintf(b, sizeof b, "%.4g (%.4g) [%.4g .. %.4g]", quantile(t.wall, 0.5), quantile(t.cpu, 0.5),
-                    *std::min_element(t.wall.begin(), t.wall.end()), *std::max_element(t.wall.begin(), t.wall.end()));
+    auto ms = [](double x) {  // 4 significant digits, no exponent for seconds-long builds
+      char b[32];
+      std::snprintf(b, sizeof b, x >= 1000 ? "%.0f" : "%.4g", x);
       return std::string(b);
+    };
+    auto cell = [&](const Times& t) {
+      return ms(quantile(t.wall, 0.5)) + " (" + ms(quantile(t.cpu, 0.5)) + ") [" +
+             ms(*std::min_element(t.wall.begin(), t.wall.end())) + " .. " +
+             ms(*std::max_element(t.wall.begin(), t.wall.end())) + "]";
     };
     std::printf("%7d | %-34s %-34s | %-34s %-34s %-34s\n", n, cell(firstCold).c_str(), cell(second).c_str(),
                 cell(prep).c_str(), cell(prepAgain).c_str(), cell(firstPrepared).c_str());
