@@ -8,6 +8,9 @@
 //   2. scaling ellipsoid pairs of 100 .. 100k vertices: build times and time per query.
 //   3. coherence a pair moving along a smooth path: cold against warm-cache queries.
 //   4. precision mink in float, double, long double and exact rationals: time against error.
+//   5. prepare   the first query on a fresh, unprepared large shape (it builds the shape's
+//                Dobkin–Kirkpatrick hierarchy) against the first query after prepare(), and
+//                prepare()'s own time (mink/hierarchy/prepare.hpp).
 // The adapters for the peers, and what each one measures, are in benchmarks/peers.hpp.
 //
 // Placements follow the paper: for each orientation of Q and a random axis u, the offset
@@ -28,7 +31,7 @@
 // Usage: mink_mdd_bench [outdir] [--quick] [--orientations O] [--directions D]
 //                       [--exact-orientations E] [--passes K] [--sections paper,scaling,...]
 //   outdir default benchmarks/results; writes mdd_paper.csv, mdd_scaling.csv,
-//   mdd_coherence.csv, mdd_precision.csv and mdd_targets.csv (the printed tables go to
+//   mdd_coherence.csv, mdd_precision.csv, mdd_prepare.csv and mdd_targets.csv (the printed tables go to
 //   stdout). Defaults: 40 orientations x 21 placements x 10 directions per pair, the exact
 //   reference on 4 orientations, 3 timed passes (about 3 minutes on 2 shared cores).
 #include <CGAL/Gmpq.h>
@@ -230,7 +233,7 @@ struct Options {
   int gmpqDirections = 2;      // precision: directions per placement for the exact rationals
   int scalingOrientations = 4, scalingDirections = 5, coherenceFrames = 1000;
   std::vector<int> sizes = {100, 1000, 10000, 100000};
-  std::string sections = "paper,scaling,coherence,precision";
+  std::string sections = "paper,scaling,coherence,precision,prepare";
   bool has(const std::string& s) const { return sections.find(s) != std::string::npos; }
 };
 
@@ -1063,6 +1066,87 @@ void precisionSection(const Options& opt, const PaperShapes& shapes, const std::
   }
 }
 
+// ---------------------------------------------------------------------------------------
+// 5. prepare(): what the first query on a large shape costs with and without it.
+
+/// Per size and repetition, two fresh shapes from the same points (fromPoints, untimed):
+/// on the first, mdd() twice (the first call builds the hierarchy, the second is the
+/// steady-state query); on the second, prepare() twice (the build, then the call that
+/// finds everything built), then mdd(). Q is a small prepared ellipsoid; one fixed
+/// separated query, no cache. Wall time (steady_clock, what a caller waits) and the
+/// thread's CPU time (what the work costs on a shared machine); medians over the
+/// repetitions.
+void prepareSection(const Options& opt) {
+  Csv csv(opt.outdir + "/mdd_prepare.csv", setupLine(opt));
+  const std::vector<int> sizes = opt.quick ? std::vector<int>{10000} : std::vector<int>{10000, 100000};
+  const int reps = opt.quick ? 2 : 5;
+  std::printf("\n== 5. prepare(): the first mdd() on a fresh P (2:2:5 ellipsoid) against a 1000-vertex Q, "
+              "unprepared vs after prepare(P); ms, median wall (median thread CPU) [min .. max wall] over %d fresh "
+              "shapes ==\n",
+              reps);
+  std::printf("%7s | %-34s %-34s | %-34s %-34s %-34s\n", "n", "first query, unprepared", "second query",
+              "prepare()", "prepare() again", "first query, prepared");
+  const auto Q = ConvexPolyhedron<double>::fromPoints(ellipsoidPoints(1000, 501u));
+  mink::prepare(Q);
+  Pose<double> poseQ;
+  poseQ.rotation = Eigen::AngleAxisd(0.3, Vec3d(0.2, 0.5, 1.0).normalized()).toRotationMatrix();
+  poseQ.translation = Vec3d(7.0, 0.5, 0.2);
+  const Vec3d s(-1.0, 0.1, 0.05);
+  const Pose<double> I;
+  struct Times {
+    std::vector<double> wall, cpu;
+    void time(const std::function<void()>& f) {
+      const double w0 = mink_bench::wallMs(), c0 = mink_bench::threadCpuMs();
+      f();
+      cpu.push_back(mink_bench::threadCpuMs() - c0);
+      wall.push_back(mink_bench::wallMs() - w0);
+    }
+  };
+  for (int n : sizes) {
+    const std::vector<Vec3d> pts = ellipsoidPoints(n, 500u + n);
+    Times firstCold, second, prep, prepAgain, firstPrepared;
+    auto query = [&](const ConvexPolyhedron<double>& P) { gSink = gSink + mink::mdd(P, I, Q, poseQ, s).translation; };
+    for (int r = 0; r < reps; ++r) {
+      {
+        const auto P = ConvexPolyhedron<double>::fromPoints(pts);
+        firstCold.time([&] { query(P); });
+        second.time([&] { query(P); });
+      }
+      const auto P = ConvexPolyhedron<double>::fromPoints(pts);
+      prep.time([&] { gSink = gSink + (mink::prepare(P) != nullptr); });
+      prepAgain.time([&] { gSink = gSink + (mink::prepare(P) != nullptr); });
+      firstPrepared.time([&] { query(P); });
+    }
+    auto ms = [](double x) {  // 4 significant digits, no exponent for seconds-long builds
+      char b[32];
+      std::snprintf(b, sizeof b, x >= 1000 ? "%.0f" : "%.4g", x);
+      return std::string(b);
+    };
+    auto cell = [&](const Times& t) {
+      return ms(quantile(t.wall, 0.5)) + " (" + ms(quantile(t.cpu, 0.5)) + ") [" +
+             ms(*std::min_element(t.wall.begin(), t.wall.end())) + " .. " +
+             ms(*std::max_element(t.wall.begin(), t.wall.end())) + "]";
+    };
+    std::printf("%7d | %-34s %-34s | %-34s %-34s %-34s\n", n, cell(firstCold).c_str(), cell(second).c_str(),
+                cell(prep).c_str(), cell(prepAgain).c_str(), cell(firstPrepared).c_str());
+    std::fflush(stdout);
+    const std::string cs = std::to_string(n);
+    // The CSV's time columns are in us.
+    auto us = [](std::vector<double> v) {
+      for (double& x : v) x *= 1e3;
+      return summarize(v);
+    };
+    for (const auto& [name, t] : {std::pair<const char*, const Times*>{"mdd_first_unprepared", &firstCold},
+                                  {"mdd_second", &second},
+                                  {"prepare", &prep},
+                                  {"prepare_again", &prepAgain},
+                                  {"mdd_first_prepared", &firstPrepared}}) {
+      csv.row("prepare", cs, name, "wall", us(t->wall));
+      csv.row("prepare", cs, name, "thread_cpu", us(t->cpu));
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -1118,6 +1202,7 @@ int main(int argc, char** argv) {
   if (opt.has("scaling")) scalingSection(opt, tg);
   if (opt.has("coherence")) coherenceSection(opt, shapes, tg);
   if (opt.has("precision")) precisionSection(opt, shapes, pairs, tg);
+  if (opt.has("prepare")) prepareSection(opt);
 
   // Targets, measured in this run.
   std::printf("\n== Targets (ratios of medians measured in this run) ==\n");

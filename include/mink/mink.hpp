@@ -17,10 +17,12 @@
 // polyhedron: ConvexPolyhedron<T> (hull, validation, adjacency, support).
 #include "mink/polyhedron/convex_polyhedron.hpp"
 
-// gauss_map: Gauss maps and their exact predicates; hierarchy: Dobkin–Kirkpatrick.
+// gauss_map: Gauss maps and their exact predicates; hierarchy: Dobkin–Kirkpatrick, and
+// prepare() to build a shape's derived structures before its first query.
 #include "mink/gauss_map/arc_intersection.hpp"
 #include "mink/gauss_map/gauss_map.hpp"
 #include "mink/hierarchy/dk_hierarchy.hpp"
+#include "mink/hierarchy/prepare.hpp"
 
 // mdd: the minimum directional distance between two convex polyhedra.
 #include "mink/mdd/mdd.hpp"

@@ -5,7 +5,9 @@
 // the cell of d, and every convex edge whose short Gauss arc crosses a query arc (exact arc
 // test in Gmpq) is listed in a cell the arc meets. Random directions and arcs (fixed seed),
 // including the face normals themselves (cell corners: the boundary cases). Two shapes
-// far from unit scale (2^-1000, 2^280).
+// far from unit scale (2^-1000, 2^280). prepare(TriangleMesh): the map is built once,
+// shared by copies, and the local Minkowski sum of prepared meshes is that of unprepared
+// twins.
 #include "mink/cpd/convex_map.hpp"
 
 #include <gtest/gtest.h>
@@ -18,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "mink/cpd/local_minkowski_sum.hpp"
 #include "mink/gauss_map/arc_intersection.hpp"
 #include "support/mesh_shapes.hpp"
 
@@ -131,6 +134,44 @@ TEST(ConvexMap, EdgeSetsAreComplete) {
     }
     EXPECT_GT(crossings, 0);
   }
+}
+
+TEST(ConvexMap, PrepareBuildsTheMapOnceForEveryCopy) {
+  const auto s = mink_test::torus(16, 12);
+  const Mesh X = Mesh::fromMesh(s.verticesAs<double>(), s.triangles);
+  const Mesh copyBefore = X;
+  EXPECT_FALSE(mink::isPrepared(X));
+  const auto map = mink::prepare(X);
+  ASSERT_NE(map, nullptr);
+  EXPECT_TRUE(mink::isPrepared(X));
+  EXPECT_TRUE(mink::isPrepared(copyBefore));
+  const Mesh copyAfter = X;
+  EXPECT_EQ(mink::prepare(copyAfter), map);
+  EXPECT_EQ(mink::ConvexMap<double>::of(copyBefore), map);
+  // A mesh of the same numbers is another mesh.
+  EXPECT_FALSE(mink::isPrepared(Mesh::fromMesh(s.verticesAs<double>(), s.triangles)));
+  // The prepared map is a convex map of X: same cells as one built directly.
+  EXPECT_EQ(map->numCells(), mink::ConvexMap<double>(X).numCells());
+}
+
+TEST(ConvexMap, PreparedMeshesGiveTheSameLocalSum) {
+  const auto a = mink_test::cup(), b = mink_test::torus(16, 12);
+  const Mesh A = Mesh::fromMesh(a.verticesAs<double>(), a.triangles);
+  const Mesh B = Mesh::fromMesh(b.verticesAs<double>(), b.triangles);
+  const Mesh Au = Mesh::fromMesh(a.verticesAs<double>(), a.triangles);
+  const Mesh Bu = Mesh::fromMesh(b.verticesAs<double>(), b.triangles);
+  mink::prepare(A);
+  mink::prepare(B);
+  mink::LocalMinkowskiSum<double> prepared(A, B), unprepared(Au, Bu);
+  mink::Pose<double> poseA, poseB;
+  poseB.translation = V(0.4, -0.2, 0.3);
+  const V centre(0.2, 0.1, -0.1);
+  const auto& pu = unprepared.update(poseA, poseB, centre, 0.8);
+  EXPECT_TRUE(mink::isPrepared(Au) && mink::isPrepared(Bu));  // the query built them
+  const auto& pp = prepared.update(poseA, poseB, centre, 0.8);
+  ASSERT_FALSE(pp.triangles.empty());
+  EXPECT_EQ(pp.vertices, pu.vertices);
+  EXPECT_EQ(pp.triangles, pu.triangles);
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 # Run by the package.consumer and package.planner tests (see CMakeLists.txt here) as
 #   cmake -DMINK_SOURCE_DIR=... -DCONSUMER_SOURCE_DIR=... -DWORK_DIR=... -DGENERATOR=...
-#         [-DCXX_COMPILER=...] [-DEIGEN3_DIR=...] [-DCONSUMER_EXECUTABLE=name] -P package_test.cmake
+#         [-DCXX_COMPILER=...] [-DEIGEN3_DIR=...] [-DCGAL_DIR=...]
+#         [-DCONSUMER_EXECUTABLE=name[,name...]] -P package_test.cmake
 # Steps: configure mink alone (tests, benchmarks, examples off) and install it into
-# WORK_DIR/prefix; check the installed files; build the consumer project against the
-# prefix only; run its executable CONSUMER_EXECUTABLE (default: consumer) in its build
-# directory. Any failure stops the script with a message (non-zero exit).
+# WORK_DIR/prefix; check the installed files (no installed header uses CGAL); build the
+# consumer project against the prefix only (CGAL_DIR, when given, is passed on to it);
+# run its executables CONSUMER_EXECUTABLE (comma-separated; default: consumer) in its
+# build directory. Any failure stops the script with a message (non-zero exit).
 cmake_minimum_required(VERSION 3.20)
 
 foreach(var MINK_SOURCE_DIR CONSUMER_SOURCE_DIR WORK_DIR GENERATOR)
@@ -77,21 +79,56 @@ endforeach()
 list(LENGTH installed installed_count)
 message(STATUS "package test: ${installed_count} installed files checked: ok")
 
+# CGAL in particular, beyond its includes (the consumer below calls mddExact<CGAL::Gmpq>,
+# so CGAL must come from the consumer alone): no installed header's code names it in any
+# spelling. Comments may, where they give CGAL::Gmpq as an example of the exact type a
+# caller supplies; they are stripped first and only counted.
+set(cgal_in_comments "")
+foreach(f IN LISTS installed)
+  if(NOT f MATCHES "^include/")
+    continue()
+  endif()
+  file(READ "${prefix}/${f}" content)
+  string(REGEX REPLACE "/\\*([^*]|\\*+[^*/])*\\*+/" "" code "${content}")
+  string(REGEX REPLACE "//[^\n]*" "" code "${code}")
+  string(REGEX MATCH "[Cc][Gg][Aa][Ll][^\n]*" hit "${code}")
+  if(hit)
+    message(FATAL_ERROR "package test: installed header ${prefix}/${f} uses CGAL outside comments: '${hit}'")
+  endif()
+  if(content MATCHES "[Cc][Gg][Aa][Ll]")
+    list(APPEND cgal_in_comments "${f}")
+  endif()
+endforeach()
+list(LENGTH cgal_in_comments cgal_comment_count)
+message(STATUS "package test: no installed header uses CGAL (${cgal_comment_count} name it in comments: "
+               "${cgal_in_comments}): ok")
+
 # 3. Build the consumer against the prefix alone (no package registry, no source tree).
+set(consumer_args "")
+if(CGAL_DIR)
+  list(APPEND consumer_args "-DCGAL_DIR=${CGAL_DIR}")
+endif()
 step("configure consumer" ${CMAKE_COMMAND} -S "${CONSUMER_SOURCE_DIR}" -B "${consumer_build}"
-     ${common_args} "-DCMAKE_PREFIX_PATH=${prefix}" "-DMINK_EXPECTED_PREFIX=${prefix}"
+     ${common_args} ${consumer_args} "-DCMAKE_PREFIX_PATH=${prefix}" "-DMINK_EXPECTED_PREFIX=${prefix}"
      -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_FIND_USE_SYSTEM_PACKAGE_REGISTRY=OFF)
 step("build consumer" ${CMAKE_COMMAND} --build "${consumer_build}")
 
-# 4. Run it (in its build directory, where it may write files): it checks its own results
-#    and exits non-zero on a mismatch.
+# 4. Run each of its programs (in its build directory, where they may write files): each
+#    checks its own results and exits non-zero on a mismatch. A program named here that
+#    the consumer did not build is a failure.
 if(NOT CONSUMER_EXECUTABLE)
   set(CONSUMER_EXECUTABLE consumer)
 endif()
-execute_process(COMMAND "${consumer_build}/${CONSUMER_EXECUTABLE}" WORKING_DIRECTORY "${consumer_build}"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE step_output ERROR_VARIABLE step_output)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "package test: run ${CONSUMER_EXECUTABLE} failed (${rc}):\n${step_output}")
-endif()
-message(STATUS "package test: run ${CONSUMER_EXECUTABLE}: ok")
-message(STATUS "consumer output:\n${step_output}")
+string(REPLACE "," ";" programs "${CONSUMER_EXECUTABLE}")
+foreach(program IN LISTS programs)
+  if(NOT EXISTS "${consumer_build}/${program}")
+    message(FATAL_ERROR "package test: the consumer did not build ${program}")
+  endif()
+  execute_process(COMMAND "${consumer_build}/${program}" WORKING_DIRECTORY "${consumer_build}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE step_output ERROR_VARIABLE step_output)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "package test: run ${program} failed (${rc}):\n${step_output}")
+  endif()
+  message(STATUS "package test: run ${program}: ok")
+  message(STATUS "${program} output:\n${step_output}")
+endforeach()

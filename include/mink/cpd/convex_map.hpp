@@ -322,4 +322,20 @@ class ConvexMap {
   std::vector<V3> poly_, clipped_, dirs_, rays_;
 };
 
+/// Builds X's convex map up front: the one structure of a mesh that a CPD query
+/// (LocalMinkowskiSum::update with LocalSumMethod::ConvexMaps, the default, and the CPD
+/// query through it) would otherwise build inside its first call. Shared by every copy of
+/// X; thread-safe and idempotent. The mesh counterpart of prepare(ConvexPolyhedron)
+/// (hierarchy/prepare.hpp). Returns the map.
+template <class T>
+std::shared_ptr<const ConvexMap<T>> prepare(const TriangleMesh<T>& X) {
+  return ConvexMap<T>::of(X);
+}
+
+/// True when X's convex map is built (by prepare or an earlier query). Never builds.
+template <class T>
+bool isPrepared(const TriangleMesh<T>& X) {
+  return X.template hasDerived<ConvexMap<T>>();
+}
+
 }  // namespace mink

@@ -164,9 +164,10 @@ class DKHierarchy {
   DKBuildStop stop_ = DKBuildStop::ReachedTop;
 };
 
-/// The shape's hierarchy, built on first use and shared by every copy of the shape, or
-/// nullptr when the shape has fewer than defaults::kHierarchyMinVertices vertices (below
-/// that a cold hill-climb is nearly as fast; benchmarks/README.md has the measurement).
+/// The shape's hierarchy, built on first use (or up front by prepare(), prepare.hpp) and
+/// shared by every copy of the shape, or nullptr when the shape has fewer than
+/// defaults::kHierarchyMinVertices vertices (below that a cold hill-climb is nearly as
+/// fast; benchmarks/README.md has the measurement).
 /// Thread-safe: concurrent first calls build it once; later calls cost one atomic load.
 /// A build that throws (it cannot for valid shapes) propagates and is retried next call.
 template <class T>

@@ -29,7 +29,7 @@ struct SupportSeeds {
 template <class T>
 const SupportSeeds& supportSeedsOf(const ConvexPolyhedron<T>& P) {
   detail::DerivedSlot& slot = P.derivedSlots().slot[detail::DerivedSlots::kSupportSeeds];
-  std::call_once(slot.once, [&] {
+  return *static_cast<const SupportSeeds*>(slot.get([&] {
     auto seeds = std::make_shared<SupportSeeds>();
     for (int a = -1; a <= 1; ++a)
       for (int b = -1; b <= 1; ++b)
@@ -37,9 +37,8 @@ const SupportSeeds& supportSeedsOf(const ConvexPolyhedron<T>& P) {
           const int i = (a + 1) * 9 + (b + 1) * 3 + (c + 1);
           seeds->vertex[i] = (a | b | c) ? P.supportBruteForce(Vec3<T>(T(a), T(b), T(c))) : 0;
         }
-    slot.value = std::static_pointer_cast<const void>(std::shared_ptr<const SupportSeeds>(seeds));
-  });
-  return *static_cast<const SupportSeeds*>(slot.value.get());
+    return std::shared_ptr<const SupportSeeds>(seeds);
+  }));
 }
 
 /// The seed vertex whose direction is nearest d's.

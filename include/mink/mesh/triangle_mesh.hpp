@@ -133,6 +133,15 @@ class TriangleMesh {
     if (!p) p = std::shared_ptr<const D>(make());
     return std::static_pointer_cast<const D>(p);
   }
+  /// Has derived<D>() made its structure yet? Never builds; while another thread's first
+  /// derived() call runs a make(), it waits for that call to finish.
+  template <class D>
+  bool hasDerived() const {
+    auto& slot = *d_->derived;
+    std::lock_guard<std::mutex> lock(slot.mutex);
+    const auto it = slot.items.find(std::type_index(typeid(D)));
+    return it != slot.items.end() && it->second != nullptr;
+  }
 
  private:
   static constexpr unsigned char kAllConvex = 1, kNoReflex = 2;

@@ -21,6 +21,7 @@
 // Every structure is in the shape's own frame; poses are applied by the queries.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -54,10 +55,28 @@ struct PolyhedronBuilder;
 
 /// Lazily made structures derived from a shape (its Dobkin–Kirkpatrick hierarchy, ...),
 /// shared by every copy of the shape and built at most once, thread-safely. The
-/// polyhedron layer knows nothing of their types; higher layers fill the slots.
+/// polyhedron layer knows nothing of their types; higher layers fill the slots, and
+/// hierarchy/prepare.hpp fills every one of them up front.
 struct DerivedSlot {
   std::once_flag once;
   std::shared_ptr<const void> value;
+  std::atomic<bool> built{false};
+
+  /// The slot's structure, made by make() (returning a shared_ptr to it) on the first
+  /// call. call_once: concurrent first callers wait for one build, and its completion
+  /// happens-before every return, so the plain read of value is race-free. A make() that
+  /// throws leaves the slot empty and is retried by the next call.
+  template <class Make>
+  const void* get(Make&& make) {
+    std::call_once(once, [&] {
+      value = std::static_pointer_cast<const void>(make());
+      built.store(true, std::memory_order_release);
+    });
+    return value.get();
+  }
+  /// Has get() filled the slot? Never waits and never builds: false while a first build
+  /// is still running.
+  bool isBuilt() const { return built.load(std::memory_order_acquire); }
 };
 struct DerivedSlots {
   enum Id { kHierarchy = 0, kSupportSeeds, kCount };

@@ -281,12 +281,7 @@ template <class T>
 const DKHierarchy<T>* hierarchyOf(const ConvexPolyhedron<T>& P) {
   if (P.numVertices() < defaults::kHierarchyMinVertices) return nullptr;
   detail::DerivedSlot& slot = P.derivedSlots().slot[detail::DerivedSlots::kHierarchy];
-  // call_once: concurrent first callers wait for one build; its completion happens-before
-  // every return, so the plain read of slot.value below is race-free.
-  std::call_once(slot.once, [&] {
-    slot.value = std::static_pointer_cast<const void>(std::make_shared<const DKHierarchy<T>>(P));
-  });
-  return static_cast<const DKHierarchy<T>*>(slot.value.get());
+  return static_cast<const DKHierarchy<T>*>(slot.get([&] { return std::make_shared<const DKHierarchy<T>>(P); }));
 }
 
 template <class T>
