@@ -4,6 +4,10 @@
 // the previous answer while the direction turns slowly) and by a brute-force scan.
 // Then the crossover size where the hierarchy beats a cold hill-climb (the value of
 // defaults::kHierarchyMinVertices) and a sweep of the hierarchy's two parameters.
+// Anchors for the builds, timed in the same run on the same points (when found at
+// configure time): CGAL's convex_hull_3 over Epick into a Surface_mesh (a hull with its
+// half-edge adjacency: what fromPoints builds), and FCL's fcl::Convexd made from that
+// hull (tests/support/gjk_reference.hpp's GjkShape, as mdd_bench uses it).
 //
 // Inputs: points on the ellipsoid with semi-axes 2, 2, 5 (isotropic Gaussian directions,
 // normalised, scaled), so that every point is a hull vertex; random query directions
@@ -29,6 +33,15 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#ifdef MINK_BENCH_HAVE_CGAL
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_3.h>
+#endif
+#ifdef MINK_BENCH_HAVE_FCL
+#include "support/gjk_reference.hpp"
+#endif
 
 #include "bench_common.hpp"
 #include "mink/core/defaults.hpp"
@@ -213,11 +226,40 @@ int main(int argc, char** argv) {
     printRow("hull build (fromPoints)", hull, "ms", 1e-3);
     csv.row("build", n, V, "hull", "", hull);
 
+#ifdef MINK_BENCH_HAVE_CGAL
+    {
+      // The points converted once, outside the timing (mink takes its own input as is).
+      using Point = CGAL::Epick::Point_3;
+      std::vector<Point> cp;
+      cp.reserve(pts.size());
+      for (const Vec& p : pts) cp.emplace_back(p.x(), p.y(), p.z());
+      const Timing cgal = timeIt(buildReps, 1, [&] {
+        CGAL::Surface_mesh<Point> mesh;
+        CGAL::convex_hull_3(cp.begin(), cp.end(), mesh);
+        gSink += static_cast<long long>(mesh.number_of_vertices());
+      });
+      printRow("CGAL convex_hull_3 (Epick, Surface_mesh)", cgal, "ms", 1e-3);
+      csv.row("build", n, V, "cgal_hull", "", cgal, "CGAL::convex_hull_3 Epick into Surface_mesh");
+      std::printf("    fromPoints / CGAL hull: %.2f\n", hull.median / cgal.median);
+      csv.value("build_ratio", n, "hull_over_cgal", hull.median / cgal.median);
+    }
+#endif
+#ifdef MINK_BENCH_HAVE_FCL
+    {
+      const Timing fcl = timeIt(buildReps, 1, [&] {
+        const mink_test::GjkShape g(pts);
+        gSink += g.fclConvex().getFaceCount();
+      });
+      printRow("FCL Convex (CGAL hull + fcl::Convexd)", fcl, "ms", 1e-3);
+      csv.row("build", n, V, "fcl_convex", "", fcl, "CGAL Epick hull + fcl::Convexd (gjk_reference.hpp)");
+    }
+#endif
+
     const Timing hier = timeIt(buildReps, 1, [&] { gSink += DKHierarchy<double>(P).numLevels(); });
     printRow("hierarchy build", hier, "ms", 1e-3);
-    std::printf("    hierarchy build / hull build: %.2f (it re-hulls ~2.7 n points in total)\n",
-                hier.median / hull.median);
+    std::printf("    hierarchy build / hull build: %.2f\n", hier.median / hull.median);
     csv.row("build", n, V, "hierarchy", "", hier);
+    csv.value("build_ratio", n, "hierarchy_over_hull", hier.median / hull.median);
     fitN.push_back(n);
     fitT.push_back(hier.median);
 
