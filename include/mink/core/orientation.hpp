@@ -376,6 +376,23 @@ Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, int*
   }
 }
 
+namespace detail {
+/// At least denorm_min · s (s >= 0), computed without a denormal result: a product or sum
+/// that yields or takes a denormal costs a microcode assist on x86 (about a hundred
+/// cycles), and the filters below would pay it on every call. Where denorm_min · s is
+/// below the normal range this returns the smallest normal number instead (larger, so the
+/// bound stays a bound; it only sends determinants smaller than that to the exact stage).
+template <class T>
+inline T denormalErrorBound(const T& s) {
+  constexpr T normalOverDenormal = [] {  // min() / denorm_min() = 2^(digits - 1)
+    T x(1);
+    for (int i = 1; i < std::numeric_limits<T>::digits; ++i) x *= T(2);
+    return x;
+  }();
+  return std::numeric_limits<T>::min() * std::max(T(1), s / normalOverDenormal);
+}
+}  // namespace detail
+
 /// Exact sign of det[b − a, c − a, d − a] (see the header comment).
 template <class T>
 int orient3d(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& d) {
@@ -399,9 +416,8 @@ int orient3d(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>
     const T eps = std::numeric_limits<T>::epsilon() / T(2);
     // Plus the absolute error of results that fall below the normal range (tiny
     // coordinates): at most half a denormal per rounding, times the factor applied after.
-    const T dm = std::numeric_limits<T>::denorm_min();
-    const T bound =
-        (T(7) + T(56) * eps) * eps * perm + dm * (T(2) * (abs(u[0]) + abs(u[1]) + abs(u[2])) + T(4));
+    const T bound = (T(7) + T(56) * eps) * eps * perm +
+                    detail::denormalErrorBound(T(2) * (abs(u[0]) + abs(u[1]) + abs(u[2])) + T(4));
     if (det > bound) return 1;
     if (-det > bound) return -1;
     return detail::exactOrient3d(a, b, c, d);
@@ -426,8 +442,7 @@ int orient2d(const T& ax, const T& ay, const T& bx, const T& by, const T& cx, co
     // rounded differences, products and their difference; plus half a denormal of
     // absolute error for each product that falls below the normal range.
     const T eps = std::numeric_limits<T>::epsilon() / T(2);
-    const T bound = (T(3) + T(16) * eps) * eps * (abs(left) + abs(right)) +
-                    T(2) * std::numeric_limits<T>::denorm_min();
+    const T bound = (T(3) + T(16) * eps) * eps * (abs(left) + abs(right)) + detail::denormalErrorBound(T(2));
     if (det > bound) return 1;
     if (-det > bound) return -1;
     return detail::exactOrient2d(ax, ay, bx, by, cx, cy);
