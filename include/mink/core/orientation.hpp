@@ -32,6 +32,8 @@
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <limits>
 #include <type_traits>
@@ -263,6 +265,21 @@ inline F diffOfProducts(F a, F b, F c, F d) {
   return s + (se + (pe - qe));
 }
 
+/// x · 2^k, as std::ldexp (one correctly rounded result) but, for double and k within the
+/// normal exponent range, a multiplication by the power of two instead of a libm call.
+template <class T>
+inline T timesPowerOfTwo(T x, int k) {
+  if constexpr (std::is_same<T, double>::value && std::numeric_limits<double>::is_iec559) {
+    if (k >= -1022 && k <= 1023) {
+      const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;
+      double p;
+      std::memcpy(&p, &bits, sizeof p);
+      return x * p;
+    }
+  }
+  return std::ldexp(x, k);
+}
+
 /// (uh + ul) × (vh + vl) for two-term expansions of order one, to about one ulp of its
 /// length (see accurateCross).
 template <class T>
@@ -362,8 +379,8 @@ Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, int*
       Vec3<T>& h = *hl;
       Vec3<T>& l = hl == &uh ? ul : vl;
       for (int i = 0; i < 3; ++i) {
-        h[i] = std::ldexp(h[i], shift);
-        l[i] = std::ldexp(l[i], shift);
+        h[i] = detail::timesPowerOfTwo(h[i], shift);
+        l[i] = detail::timesPowerOfTwo(l[i], shift);
       }
       scale -= shift;
     }
@@ -372,7 +389,8 @@ Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, int*
       *exponent = scale;
       return n;
     }
-    return Vec3<T>(std::ldexp(n[0], scale), std::ldexp(n[1], scale), std::ldexp(n[2], scale));
+    return Vec3<T>(detail::timesPowerOfTwo(n[0], scale), detail::timesPowerOfTwo(n[1], scale),
+                   detail::timesPowerOfTwo(n[2], scale));
   }
 }
 

@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "mink/core/detail/input_checks.hpp"
@@ -66,6 +68,16 @@ struct PolyhedronBuilder {
       }
     }
   };
+  /// A key ordering widths as Width::operator> does (exactly, where that rounds).
+  static std::pair<int, T> sizeKey(const Width& w) {
+    if (!(w.len > T(0))) return {std::numeric_limits<int>::min(), T(0)};
+    if constexpr (ScalarTraits<T>::isExact) {
+      return {0, w.len};
+    } else {
+      const int e = std::ilogb(w.len);
+      return {w.exp + e, std::ldexp(w.len, -e)};
+    }
+  }
   static Width width(const Vec3<T>& o, const Vec3<T>& b, const Vec3<T>& c, Vec3<T>* normal = nullptr) {
     Width w;
     Vec3<T> n;
@@ -250,7 +262,14 @@ struct PolyhedronBuilder {
     }
     std::vector<int> order(nP);
     for (int f = 0; f < nP; ++f) order[f] = f;
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size[a] > size[b]; });
+    {
+      // Sizes as (binary exponent, mantissa in [1, 2)) pairs, compared lexicographically:
+      // the order of len * 2^exp, without an ldexp per comparison (which the sort's
+      // n log n comparisons made a tenth of fromPoints). Zero sizes sort last, all equal.
+      std::vector<std::pair<int, T>> key(nP);
+      for (int f = 0; f < nP; ++f) key[f] = sizeKey(size[f]);
+      std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] > key[b]; });
+    }
 
     std::vector<int> group(nP, -1);
     std::vector<int> queue;
