@@ -314,17 +314,10 @@ struct PolyhedronBuilder {
 
     // Boundary loop of each group: after boundary half-edge h (a -> b), turn around b
     // through the group's interior edges until the next boundary half-edge.
-    // Groups are numbered in the order of their first polygon (the faces come out in the
-    // input's order, which for fromPoints keeps neighbours near in memory), and their
-    // members listed CSR.
-    {
-      std::vector<int> renumber(nGroups, -1);
-      int next = 0;
-      for (int f = 0; f < nP; ++f) {
-        if (renumber[group[f]] < 0) renumber[group[f]] = next++;
-        group[f] = renumber[group[f]];
-      }
-    }
+    // Group members listed CSR. (Faces stay in seed order, largest first: numbering them
+    // by first polygon kept fromPoints' Morton order further, but changed which corner a
+    // merged face's loop starts at, hence the rounding of its normal, past what the MDD
+    // stress tests' bounds allow.)
     std::vector<int> memberStart(nGroups + 1, 0), memberList(nP);
     for (int f = 0; f < nP; ++f) ++memberStart[group[f] + 1];
     for (int g = 0; g < nGroups; ++g) memberStart[g + 1] += memberStart[g];

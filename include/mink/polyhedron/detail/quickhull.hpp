@@ -10,8 +10,8 @@
 //      form a disc (the visible set); its boundary is the horizon.
 //   4. Replace the visible faces by a cone of triangles from the eye to the horizon;
 //      hand the visible faces' points to the new faces (or drop them: inside).
-//   5. Repeat until no face has points (a stack of faces given points; dead faces'
-//      slots are reused). The triangles come out in Morton order (see collect()).
+//   5. Repeat until no face has points. The triangles come out in Morton order (see
+//      collect()).
 // "p is above face (a, b, c)" is decided exactly: for floating-point T the sign of
 // orient3d (core/orientation.hpp), through a per-face filter for double (above()), the
 // exact sign of n.(p - a) for exact T. So the triangulation is the
@@ -65,7 +65,7 @@ class Quickhull {
   };
 
   Quickhull(const std::vector<Vec3<T>>& p, const T& tol) : pts_(p), tol_(tol), next_(p.size(), -1) {
-    faces_.reserve(2 * p.size() + 8);
+    faces_.reserve(4 * p.size() + 8);
   }
 
   /// Is point i strictly above face f? `height` gets n . (p_i − v0), an increasing function
@@ -97,16 +97,9 @@ class Quickhull {
     }
   }
 
-  /// A face slot: a dead face's (its outside set was handed on when it died) or a new one.
   int makeFace(int a, int b, int c) {
-    int fi;
-    if (!freeFaces_.empty()) {
-      fi = freeFaces_.back();
-      freeFaces_.pop_back();
-    } else {
-      fi = static_cast<int>(faces_.size());
-      faces_.emplace_back();
-    }
+    const int fi = static_cast<int>(faces_.size());
+    faces_.emplace_back();
     Face& f = faces_[fi];
     f.v = {a, b, c};
     f.nbr = {-1, -1, -1};
@@ -287,18 +280,12 @@ class Quickhull {
       int a, b, outsideFace, outsideEdge;
     };
     std::vector<Horizon> horizon;
-    // Faces that were given points; a face may be listed twice, or have died (its slot
-    // perhaps reused) since: each is checked when it comes up.
-    std::vector<int> work;
-    for (std::size_t fi = 0; fi < faces_.size(); ++fi)
-      if (faces_[fi].head >= 0) work.push_back(static_cast<int>(fi));
     int mark = 0;
-    while (!work.empty()) {
-      const int fi = work.back();
-      if (!faces_[fi].alive || faces_[fi].head < 0) {
-        work.pop_back();
-        continue;
-      }
+    // Faces in creation order (each new face is appended): the order fixes how coplanar
+    // points are triangulated, hence which triangle seeds a merged face and the rounding of
+    // its normal, which the MDD stress tests' bounds were measured with.
+    for (int fi = 0; fi < static_cast<int>(faces_.size()); ++fi) {
+     while (faces_[fi].alive && faces_[fi].head >= 0) {
       const int eye = faces_[fi].eye;
       ++mark;
       // Visible set and horizon by depth-first search; recording the horizon edges
@@ -317,8 +304,7 @@ class Quickhull {
         refreshEye(fi);
         continue;
       }
-      // Cone of new faces (made before the visible faces die: no slot is reused while
-      // its outside set is still to be handed on).
+      // Cone of new faces.
       newFaces.clear();
       for (int k = 0; k < h; ++k) {
         const int nf = makeFace(horizon[k].a, horizon[k].b, eye);
@@ -339,10 +325,8 @@ class Quickhull {
           if (p != eye) assign(p, newFaces);
           p = after;
         }
-        freeFaces_.push_back(vf);
       }
-      for (int nf : newFaces)
-        if (faces_[nf].head >= 0) work.push_back(nf);
+     }
     }
   }
 
@@ -457,7 +441,6 @@ class Quickhull {
   T tol_;
   std::vector<Face> faces_;
   std::vector<int> next_;       // per point: the next point of the same outside set, or -1
-  std::vector<int> freeFaces_;  // slots of dead faces
   struct DfsFrame {
     int face, first, count, limit;
   };
