@@ -4,6 +4,10 @@
 // the previous answer while the direction turns slowly) and by a brute-force scan.
 // Then the crossover size where the hierarchy beats a cold hill-climb (the value of
 // defaults::kHierarchyMinVertices) and a sweep of the hierarchy's two parameters.
+// Anchors for the builds, timed in the same run on the same points (when found at
+// configure time): CGAL's convex_hull_3 over Epick into a Surface_mesh (a hull with its
+// half-edge adjacency: what fromPoints builds), and FCL's fcl::Convexd made from that
+// hull (tests/support/gjk_reference.hpp's GjkShape, as mdd_bench uses it).
 //
 // Inputs: points on the ellipsoid with semi-axes 2, 2, 5 (isotropic Gaussian directions,
 // normalised, scaled), so that every point is a hull vertex; random query directions
@@ -11,9 +15,10 @@
 // Every time is a median over repetitions, with min, max and quartiles; a repetition of
 // a query figure is one batch of queries, divided by the batch size.
 //
-// Usage: mink_foundation_bench [out.csv] [--quick]
-//   out.csv  default benchmarks/results/foundation.csv (directory must exist)
-//   --quick  fewer repetitions and sizes (smoke test, numbers not for publication)
+// Usage: mink_foundation_bench [out.csv] [--quick] [--builds]
+//   out.csv   default benchmarks/results/foundation.csv (directory must exist)
+//   --quick   fewer repetitions and sizes (smoke test, numbers not for publication)
+//   --builds  the build rows of section 1 only (hull, anchors, hierarchy)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -29,6 +34,15 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#ifdef MINK_BENCH_HAVE_CGAL
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_3.h>
+#endif
+#ifdef MINK_BENCH_HAVE_FCL
+#include "support/gjk_reference.hpp"
+#endif
 
 #include "bench_common.hpp"
 #include "mink/core/defaults.hpp"
@@ -166,10 +180,12 @@ void printRow(const std::string& what, const Timing& s, const char* unit, double
 
 int main(int argc, char** argv) {
   std::string csvPath = "benchmarks/results/foundation.csv";
-  bool quick = false;
+  bool quick = false, buildsOnly = false;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0) {
       quick = true;
+    } else if (std::strcmp(argv[i], "--builds") == 0) {
+      buildsOnly = true;
     } else {
       csvPath = argv[i];
     }
@@ -191,7 +207,7 @@ int main(int argc, char** argv) {
   csv.out << "# defaults: kHierarchyMinVertices=" << mink::defaults::kHierarchyMinVertices
           << " kHierarchyMaxRemovedDegree=" << mink::defaults::kHierarchyMaxRemovedDegree
           << " kHierarchyTopVertices=" << mink::defaults::kHierarchyTopVertices << "\n";
-  csv.out << "# load average at start: " << loadAverage() << (quick ? " (--quick)" : "") << "\n";
+  csv.out << "# load average at start: " << loadAverage() << (quick ? " (--quick)" : "") << (buildsOnly ? " (--builds)" : "") << "\n";
 
   // ---------------------------------------------------------------------------------
   // 1. Builds and queries at 1k, 10k, 100k.
@@ -213,13 +229,43 @@ int main(int argc, char** argv) {
     printRow("hull build (fromPoints)", hull, "ms", 1e-3);
     csv.row("build", n, V, "hull", "", hull);
 
+#ifdef MINK_BENCH_HAVE_CGAL
+    {
+      // The points converted once, outside the timing (mink takes its own input as is).
+      using Point = CGAL::Epick::Point_3;
+      std::vector<Point> cp;
+      cp.reserve(pts.size());
+      for (const Vec& p : pts) cp.emplace_back(p.x(), p.y(), p.z());
+      const Timing cgal = timeIt(buildReps, 1, [&] {
+        CGAL::Surface_mesh<Point> mesh;
+        CGAL::convex_hull_3(cp.begin(), cp.end(), mesh);
+        gSink += static_cast<long long>(mesh.number_of_vertices());
+      });
+      printRow("CGAL convex_hull_3 (Epick, Surface_mesh)", cgal, "ms", 1e-3);
+      csv.row("build", n, V, "cgal_hull", "", cgal, "CGAL::convex_hull_3 Epick into Surface_mesh");
+      std::printf("    fromPoints / CGAL hull: %.2f\n", hull.median / cgal.median);
+      csv.value("build_ratio", n, "hull_over_cgal", hull.median / cgal.median);
+    }
+#endif
+#ifdef MINK_BENCH_HAVE_FCL
+    {
+      const Timing fcl = timeIt(buildReps, 1, [&] {
+        const mink_test::GjkShape g(pts);
+        gSink += g.fclConvex().getFaceCount();
+      });
+      printRow("FCL Convex (CGAL hull + fcl::Convexd)", fcl, "ms", 1e-3);
+      csv.row("build", n, V, "fcl_convex", "", fcl, "CGAL Epick hull + fcl::Convexd (gjk_reference.hpp)");
+    }
+#endif
+
     const Timing hier = timeIt(buildReps, 1, [&] { gSink += DKHierarchy<double>(P).numLevels(); });
     printRow("hierarchy build", hier, "ms", 1e-3);
-    std::printf("    hierarchy build / hull build: %.2f (it re-hulls ~2.7 n points in total)\n",
-                hier.median / hull.median);
+    std::printf("    hierarchy build / hull build: %.2f\n", hier.median / hull.median);
     csv.row("build", n, V, "hierarchy", "", hier);
+    csv.value("build_ratio", n, "hierarchy_over_hull", hier.median / hull.median);
     fitN.push_back(n);
     fitT.push_back(hier.median);
+    if (buildsOnly) continue;
 
     const DKHierarchy<double> H(P);
     long long evals = 0;
@@ -302,6 +348,12 @@ int main(int argc, char** argv) {
       std::printf("  n=%g: measured/fit %.2f", fitN[i], fitT[i] / (a * fitN[i] * std::log2(fitN[i])));
     std::printf("\n");
     csv.value("fit", 0, "hierarchy_us_per_nlog2n", a);
+  }
+
+  if (buildsOnly) {
+    std::printf("\n  load average at end: %s\n  CSV written to %s (--builds: section 1's builds only)\n",
+                loadAverage().c_str(), csvPath.c_str());
+    return gSink == 42 ? 1 : 0;
   }
 
   // ---------------------------------------------------------------------------------

@@ -5,7 +5,8 @@ usage: plot_foundation.py [foundation.csv] [foundation.png]
 defaults: benchmarks/results/foundation.csv -> benchmarks/results/foundation.png
 
 Panels: (a) support-query time per method against n, median with min..max bars;
-(b) hull and hierarchy build time against n with the fitted a * n log2 n;
+(b) hull and hierarchy build time against n with the fitted a * n log2 n, beside
+CGAL's convex_hull_3 and FCL's Convex on the same points when the bench has them;
 (c) the crossover of the hierarchy against a cold hill-climb on small shapes, with the
 chosen defaults::kHierarchyMinVertices read from the CSV comment line;
 (d) the parameter sweep (query time for each removed-degree bound and top size).
@@ -81,6 +82,11 @@ def main():
     errorbars(b, select(rows, "build", "hull"), "hull (fromPoints)", scale=1e-3)
     hier = select(rows, "build", "hierarchy")
     errorbars(b, hier, "DK hierarchy", scale=1e-3)
+    # The anchors, when the bench was built with CGAL (and FCL): same points, same run.
+    errorbars(b, select(rows, "build", "cgal_hull"), "CGAL convex_hull_3 (Epick, Surface_mesh)",
+              scale=1e-3, linestyle="--")
+    errorbars(b, select(rows, "build", "fcl_convex"), "FCL Convex (CGAL hull + fcl::Convexd)",
+              scale=1e-3, linestyle="--")
     fit = [r for r in rows if r["section"] == "fit"]
     if fit and hier:
         coef = fit[0]["median_us"]

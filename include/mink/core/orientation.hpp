@@ -32,6 +32,8 @@
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <limits>
 #include <type_traits>
@@ -263,6 +265,21 @@ inline F diffOfProducts(F a, F b, F c, F d) {
   return s + (se + (pe - qe));
 }
 
+/// x · 2^k, as std::ldexp (one correctly rounded result) but, for double and k within the
+/// normal exponent range, a multiplication by the power of two instead of a libm call.
+template <class T>
+inline T timesPowerOfTwo(T x, int k) {
+  if constexpr (std::is_same<T, double>::value && std::numeric_limits<double>::is_iec559) {
+    if (k >= -1022 && k <= 1023) {
+      const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;
+      double p;
+      std::memcpy(&p, &bits, sizeof p);
+      return x * p;
+    }
+  }
+  return std::ldexp(x, k);
+}
+
 /// (uh + ul) × (vh + vl) for two-term expansions of order one, to about one ulp of its
 /// length (see accurateCross).
 template <class T>
@@ -362,8 +379,8 @@ Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, int*
       Vec3<T>& h = *hl;
       Vec3<T>& l = hl == &uh ? ul : vl;
       for (int i = 0; i < 3; ++i) {
-        h[i] = std::ldexp(h[i], shift);
-        l[i] = std::ldexp(l[i], shift);
+        h[i] = detail::timesPowerOfTwo(h[i], shift);
+        l[i] = detail::timesPowerOfTwo(l[i], shift);
       }
       scale -= shift;
     }
@@ -372,9 +389,28 @@ Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, int*
       *exponent = scale;
       return n;
     }
-    return Vec3<T>(std::ldexp(n[0], scale), std::ldexp(n[1], scale), std::ldexp(n[2], scale));
+    return Vec3<T>(detail::timesPowerOfTwo(n[0], scale), detail::timesPowerOfTwo(n[1], scale),
+                   detail::timesPowerOfTwo(n[2], scale));
   }
 }
+
+namespace detail {
+/// At least denorm_min · s (s >= 0), computed without a denormal result: a product or sum
+/// that yields or takes a denormal costs a microcode assist on x86 (about a hundred
+/// cycles), and the filters below would pay it on every call. Where denorm_min · s is
+/// below the normal range this returns the smallest normal number instead (larger, so the
+/// bound stays a bound; it only sends determinants smaller than that to the exact stage).
+template <class T>
+inline T denormalErrorBound(const T& s) {
+  constexpr T normalOverDenormal = [] {  // min() / denorm_min() = 2^(digits - 1)
+    T x(1);
+    for (int i = 1; i < std::numeric_limits<T>::digits; ++i) x *= T(2);
+    return x;
+  }();
+  constexpr T smallestNormal = std::numeric_limits<T>::min();  // compile time: see IntervalOf
+  return smallestNormal * std::max(T(1), s / normalOverDenormal);
+}
+}  // namespace detail
 
 /// Exact sign of det[b − a, c − a, d − a] (see the header comment).
 template <class T>
@@ -399,12 +435,10 @@ int orient3d(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>
     constexpr T eps = std::numeric_limits<T>::epsilon() / T(2);
     // Plus the absolute error of results that fall below the normal range (tiny
     // coordinates): at most half a denormal per rounding, times the factor applied after.
-    // Bounded here by the smallest normal number instead (2^52 denormals): a larger bound
-    // is as sound, and a product that is itself denormal costs a microcode assist on x86
-    // (~75 ns, four times the whole filter), on every call.
-    constexpr T dm = std::numeric_limits<T>::min();
-    const T bound =
-        (T(7) + T(56) * eps) * eps * perm + dm * (T(2) * (abs(u[0]) + abs(u[1]) + abs(u[2])) + T(4));
+    // Bounded without denormal arithmetic (detail::denormalErrorBound): a denormal product
+    // costs a microcode assist on x86 (~75 ns, four times the whole filter), on every call.
+    const T bound = (T(7) + T(56) * eps) * eps * perm +
+                    detail::denormalErrorBound(T(2) * (abs(u[0]) + abs(u[1]) + abs(u[2])) + T(4));
     if (det > bound) return 1;
     if (-det > bound) return -1;
     return detail::exactOrient3d(a, b, c, d);
@@ -427,10 +461,10 @@ int orient2d(const T& ax, const T& ay, const T& bx, const T& by, const T& cx, co
     using std::abs;
     // Shewchuk's ccwerrboundA, (3 + 16 eps) eps with eps the unit roundoff, for the
     // rounded differences, products and their difference; plus half a denormal of
-    // absolute error for each product that falls below the normal range (bounded by the
-    // smallest normal number, as in orient3d: no denormal arithmetic in the filter).
+    // absolute error for each product that falls below the normal range (bounded without
+    // denormal arithmetic, as in orient3d).
     constexpr T eps = std::numeric_limits<T>::epsilon() / T(2);
-    const T bound = (T(3) + T(16) * eps) * eps * (abs(left) + abs(right)) + T(2) * std::numeric_limits<T>::min();
+    const T bound = (T(3) + T(16) * eps) * eps * (abs(left) + abs(right)) + detail::denormalErrorBound(T(2));
     if (det > bound) return 1;
     if (-det > bound) return -1;
     return detail::exactOrient2d(ax, ay, bx, by, cx, cy);
