@@ -395,20 +395,17 @@ Vec3<T> accurateCross(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, int*
 }
 
 namespace detail {
-/// At least denorm_min · s (s >= 0), computed without a denormal result: a product or sum
+/// At least denorm_min · s (s >= 1), computed without a denormal result: a product or sum
 /// that yields or takes a denormal costs a microcode assist on x86 (about a hundred
-/// cycles), and the filters below would pay it on every call. Where denorm_min · s is
-/// below the normal range this returns the smallest normal number instead (larger, so the
-/// bound stays a bound; it only sends determinants smaller than that to the exact stage).
+/// cycles), and the filters below would pay it on every call. It returns the smallest
+/// normal number times s: 2^52 times larger, so still a bound, and it only sends values
+/// below about 1e-307 · s (already within the rounding of an underflowed product) to the
+/// exact stage. Made at compile time: under -frounding-math GCC would otherwise convert
+/// the limit's long double literal on the x87 unit at run time.
 template <class T>
 inline T denormalErrorBound(const T& s) {
-  constexpr T normalOverDenormal = [] {  // min() / denorm_min() = 2^(digits - 1)
-    T x(1);
-    for (int i = 1; i < std::numeric_limits<T>::digits; ++i) x *= T(2);
-    return x;
-  }();
-  constexpr T smallestNormal = std::numeric_limits<T>::min();  // compile time: see IntervalOf
-  return smallestNormal * std::max(T(1), s / normalOverDenormal);
+  constexpr T smallestNormal = std::numeric_limits<T>::min();
+  return smallestNormal * s;
 }
 }  // namespace detail
 

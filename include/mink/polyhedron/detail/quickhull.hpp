@@ -87,7 +87,7 @@ class Quickhull {
       using std::abs;
       const T aw0 = abs(w[0]), aw1 = abs(w[1]), aw2 = abs(w[2]);
       const T perm = aw0 * f.perm[0] + aw1 * f.perm[1] + aw2 * f.perm[2];
-      const T eps = std::numeric_limits<T>::epsilon() / T(2);
+      constexpr T eps = std::numeric_limits<T>::epsilon() / T(2);
       const T bound = (T(8) + T(64) * eps) * eps * perm + denormalErrorBound(T(2) * (aw0 + aw1 + aw2) + T(4));
       if (height > bound) return true;
       if (-height > bound) return false;
