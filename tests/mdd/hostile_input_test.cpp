@@ -174,11 +174,55 @@ TEST(MddHostile, VisitCapZeroYieldsIterationLimitNotException) {
     ASSERT_NO_THROW(r = mink::mdd(B, Pose<double>(), B, q, s, capped));
     EXPECT_EQ(r.status, MddStatus::IterationLimit);
     EXPECT_EQ(r.faceType, mink::MddFaceType::None);
+    // No answer reads as no answer: a caller who forgets the status must not see 0
+    // (touching) or a finite distance.
+    EXPECT_TRUE(std::isnan(r.distance));
+    EXPECT_TRUE(std::isnan(r.translation));
+    EXPECT_TRUE(std::isnan(r.parameter));
     const auto full = mink::mdd(B, Pose<double>(), B, q, s);
     EXPECT_EQ(full.status, c.status);
     // Along s (tilted), the contact distance is the x-distance divided by |s_x|/|s|.
     EXPECT_NEAR(full.translation, c.translation * s.norm(), 1e-12);
   }
+}
+
+// intersects() takes the same options as mdd(): a touch tolerance (a length) makes a gap
+// below it count as contact; NaN is rejected. Boxes of half-size 1, Q's centre at x = 2 + gap.
+TEST(MddHostile, IntersectsHonoursItsOptions) {
+  const auto B = box(1);
+  Pose<double> q;
+  q.translation = V(2.001, 0.3, -0.2);
+  EXPECT_FALSE(mink::intersects(B, Pose<double>(), B, q));
+  mink::MddOptions<double> loose;
+  loose.touchTolerance = 0.01;  // 1 cm against a 1 mm gap
+  EXPECT_TRUE(mink::intersects(B, Pose<double>(), B, q, loose));
+  loose.touchTolerance = 0.0005;
+  EXPECT_FALSE(mink::intersects(B, Pose<double>(), B, q, loose));
+  mink::MddCache<double> cache;
+  EXPECT_TRUE(mink::intersects(B, Pose<double>(), B, q, cache, mink::MddOptions<double>{0.01}));
+  // The same answer as mdd() with that tolerance.
+  EXPECT_EQ(mink::mdd(B, Pose<double>(), B, q, V(-1, 0, 0), mink::MddOptions<double>{0.01}).status,
+            MddStatus::Touching);
+  mink::MddOptions<double> nan;
+  nan.touchTolerance = std::numeric_limits<double>::quiet_NaN();
+  expectRejected([&] { (void)mink::intersects(B, Pose<double>(), B, q, nan); }, "touchTolerance",
+                 "intersects touchTolerance NaN");
+}
+
+// mdd() answers for s as given, or says it did not: a component below the unit roundoff
+// of the largest is taken as 0 (directionRounded). Boxes of half-size 1, Q at x = 3.
+TEST(MddHostile, RoundedDirectionIsReported) {
+  const auto B = box(1);
+  Pose<double> q;
+  q.translation = V(3, 0, 0);
+  const auto exact = mink::mdd(B, Pose<double>(), B, q, V(-1, 0, 0));
+  EXPECT_FALSE(exact.directionRounded);
+  const auto tilted = mink::mdd(B, Pose<double>(), B, q, V(-1, 1e-3, 0));
+  EXPECT_FALSE(tilted.directionRounded);
+  const auto rounded = mink::mdd(B, Pose<double>(), B, q, V(-1, 1e-20, 0));
+  EXPECT_TRUE(rounded.directionRounded);
+  EXPECT_EQ(rounded.status, MddStatus::Separated);
+  EXPECT_DOUBLE_EQ(rounded.translation, 1.0);
 }
 
 // Regression (fuzzer): MddOptions::touchTolerance = NaN is silently replaced by the automatic

@@ -71,7 +71,7 @@ constexpr long long kMddExhaustivePairs = 1LL << 24;
 /// iterations times (vertices(P) + vertices(Q) + 16). Unit: multiple. Safe range: >= 1.
 constexpr long long kMddPortalFactor = 2;
 
-/// MDD: support queries the exit-portal estimate (mdd/exit_portal.hpp) may make before
+/// MDD: support queries the exit-portal estimate (mdd/detail/exit_portal.hpp) may make before
 /// the searches start from its best normal so far. It only seeds the searches, so a cap
 /// costs time, never correctness. Unit: support queries on M. Safe range: >= 4.
 constexpr int kMddExitPortalSteps = 48;

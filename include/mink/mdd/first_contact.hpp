@@ -2,7 +2,7 @@
 // bounded motion (a physics step's time of impact, a planner's straight segment), read
 // off one MDD query along the motion.
 //
-// With M = P ⊕ −Q and [t_lo, t_hi] the chord of M on the line of d (DESIGN.md, eq. (1)),
+// With M = P ⊕ −Q and [t_lo, t_hi] the chord of M on the line of d (eq. (1) of Choi et al.),
 // Q moved by τ·d meets P (closed sets) exactly for τ in [t_lo, t_hi]. Over τ in [0, 1]
 // the first contact is therefore:
 //   Penetrating or Touching (0 in [t_lo, t_hi])  -> at τ = 0 (`approaching` tells a touching

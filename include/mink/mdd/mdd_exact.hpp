@@ -15,7 +15,7 @@
 //      the Minkowski difference of the two features (a polygon or parallelogram inside
 //      the facet of M): then t* is an end of the chord [t_lo, t_hi] of M on the line, t_lo
 //      when N·s < 0 and t_hi when N·s > 0;
-//   4. the ends found give the status and parameter of DESIGN.md eq. (1) (a penetrating
+//   4. the ends found give the status and parameter of eq. (1) of Choi et al. (MddStatus) (a penetrating
 //      answer needs both ends). A NoContact answer is certified by its separating
 //      direction u (MddResult::normal), made exactly orthogonal to s: M's support along
 //      u, found by hill-climbing from the search's vertices, is below 0. When neither
@@ -35,7 +35,7 @@
 
 namespace mink {
 
-/// Result of mddExact (DESIGN.md). `parameter` is exact: moving Q by parameter * s (world
+/// Result of mddExact. `parameter` is exact: moving Q by parameter * s (world
 /// frame, s as given) brings P and Q into touching contact; 0 for Touching and NoContact.
 template <class E>
 struct ExactMdd {
@@ -245,7 +245,7 @@ ExactMdd<E> mddExactFallback(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
 }  // namespace detail
 /// The exact MDD of floating-point shapes for an exact rational type E supplied by the
 /// caller (CGAL::Gmpq, boost::multiprecision::mpq_rational, ...; constructible from T and
-/// closed under + − × ÷): the status and parameter of DESIGN.md eq. (1) for the numbers
+/// closed under + − × ÷): the status and parameter of eq. (1) of Choi et al. (MddStatus) for the numbers
 /// given, poses applied exactly (x_world = rotation * x + translation, in E), for the
 /// convex hulls of the shapes' vertices. See the header comment for how; `certified`
 /// says which path answered. Throws InvalidInput as mdd() does. Cost: the tests at the

@@ -1,5 +1,6 @@
 // mink/mdd/mdd_types.hpp — the result, options and cache of a minimum-directional-distance
-// query (MDD-DUAL, Choi et al., seed 000).
+// query (MDD-DUAL: Choi, Li, Rong, Wang, Cameron, "Computing the Minimum Directional
+// Distance between Two Convex Polyhedra").
 #pragma once
 
 #include <algorithm>
@@ -14,13 +15,15 @@
 
 namespace mink {
 
-/// Where the origin lies relative to M = P ⊕ −Q on the line of s (DESIGN.md, eq. (1)).
+/// Where the origin lies relative to M = P ⊕ −Q on the line of s (eq. (1) of Choi et al.).
 enum class MddStatus {
   Separated,    ///< P and Q apart; moving Q by translation along s/|s| makes them touch
   Touching,     ///< P and Q touch (0 on the boundary of M; within tolerance for inexact T)
   Penetrating,  ///< P and Q overlap; translation is the shorter way out along ±s
   NoContact,    ///< no motion of Q along s ever makes P and Q touch (line misses M)
-  IterationLimit  ///< a search hit its iteration cap, or needed a fallback over more edge pairs than MddOptions::maxExhaustivePairs
+  IterationLimit  ///< a search hit its iteration cap, or needed a fallback over more edge
+                  ///< pairs than MddOptions::maxExhaustivePairs: no answer (distance,
+                  ///< translation and parameter are NaN for floating-point T)
 };
 
 /// Which step of mdd() answered (MddResult::path), from the cheapest: each exit of M along
@@ -73,7 +76,9 @@ template <class T>
 struct MddResult {
   MddStatus status = MddStatus::NoContact;
   /// Signed MDD in length units: > 0 separated, < 0 penetrating, 0 touching.
-  /// For NoContact: +infinity where T has one, else 0 (check status).
+  /// NoContact: +infinity where T has one; IterationLimit: NaN where T has one. A type
+  /// with neither (an exact rational) leaves distance, translation and parameter 0 in
+  /// both cases: read `status` first.
   T distance = T(0);
   /// Signed, length units, along s/|s|: moving Q by translation * s/|s| brings P and Q
   /// into touching contact and |translation| is minimal. For exact T (no sqrt), this is
@@ -117,9 +122,14 @@ struct MddResult {
   /// chase of their Gauss regions (mdd/detail/region_crossings.hpp) could not run there,
   /// the two regions not fitting in one hemisphere together.
   bool usedPairScan = false;
-  /// Support queries on M made by the exit-portal estimates (mdd/exit_portal.hpp), the
+  /// Support queries on M made by the exit-portal estimates (mdd/detail/exit_portal.hpp), the
   /// starting points of the searches; 0 when a cached face answered.
   int portalSteps = 0;
+  /// True when mdd() answered for a direction other than s as given: a component of s
+  /// below the unit roundoff times its largest (inexact T) is taken as 0 (the line is
+  /// tilted by less than the rounding of any product with s). `parameter` and
+  /// `translation` are for that direction.
+  bool directionRounded = false;
   /// True when the faces kept in the MddCache from the last query answered this one
   /// (each certified by the facet check), without the centre of duality or any search.
   bool fromCache = false;

@@ -1,7 +1,7 @@
 // mink/mesh/mesh_overlap.hpp — do two placed closed meshes share a point? (closed solids:
 // touching counts, and so does one lying wholly inside the other)
 //
-// Built for CPD's trimming (CPD paper, section 5; DESIGN.md "mesh/"): for one relative pose
+// Built for CPD's trimming (CPD paper, section 5): for one relative pose
 // of B in A's frame, many translations y, each asking "does A meet B + y?".
 //   1. Per pose (constructor, setPlacement): B's vertices and sphere-tree centres are
 //      mapped into A's frame once (x -> R x + t), with B's per-component boxes.

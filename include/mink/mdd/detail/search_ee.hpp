@@ -1,4 +1,4 @@
-// mink/mdd/search_ee.hpp — SEARCH-EE of MDD-DUAL (Choi et al., seed 000, section IV-B.3).
+// mink/mdd/detail/search_ee.hpp — SEARCH-EE of MDD-DUAL (Choi et al., section IV-B.3).
 //
 //   1. Start from the better of the SEARCH-FV and SEARCH-VF answers, f_m.
 //   2. FS_0: the pairs (e_p, e_q) with e_p at a vertex of f_p and e_q at s_{−Q}(f_p) when
@@ -17,7 +17,7 @@
 
 #include "mink/core/defaults.hpp"
 #include "mink/mdd/detail/region_crossings.hpp"
-#include "mink/mdd/search_fv.hpp"
+#include "mink/mdd/detail/search_fv.hpp"
 
 namespace mink {
 namespace detail {
@@ -74,25 +74,24 @@ bool eeAtVertices(const PairFrame<T>& F, int u, int w, PairMarks& marks, RegionC
   return !capped;
 }
 
-}  // namespace detail
 
 /// SEARCH-EE from `start` (an FV or VF face). Returns the best face found (possibly
 /// `start`). Buffers and marks come from the caller (no allocation once warm). FS_i is
 /// taken vertex pair by vertex pair (eeAtVertices): the pairs of edges at the corners of
 /// the current face whose arcs cross, the same EE faces as all pairs there.
 template <class T>
-detail::MFace<T> searchEE(const detail::PairFrame<T>& F, const detail::RayObjective<T>& obj,
-                          const detail::MFace<T>& start, detail::PairMarks& marks, detail::RegionCrossings<T>& chase,
-                          detail::SearchBudget& budget, int& visited, bool& pairScan) {
+MFace<T> searchEE(const PairFrame<T>& F, const RayObjective<T>& obj,
+                          const MFace<T>& start, PairMarks& marks, RegionCrossings<T>& chase,
+                          SearchBudget& budget, int& visited, bool& pairScan) {
   const ConvexPolyhedron<T>& P = F.P();
   const ConvexPolyhedron<T>& Q = F.Q();
   marks.reset();
-  detail::MFace<T> cur = start;
-  detail::MFace<T> best;
-  auto take = [&](const detail::MFace<T>& f) {
+  MFace<T> cur = start;
+  MFace<T> best;
+  auto take = [&](const MFace<T>& f) {
     if (obj.better(f, best)) best = f;
   };
-  auto at = [&](int u, int w) { return detail::eeAtVertices(F, u, w, marks, chase, budget, visited, pairScan, take); };
+  auto at = [&](int u, int w) { return eeAtVertices(F, u, w, marks, chase, budget, visited, pairScan, take); };
   if (start.type == MddFaceType::FV) {
     for (int v : P.faceVertices(start.a))
       if (!at(v, start.b)) return cur;
@@ -103,7 +102,7 @@ detail::MFace<T> searchEE(const detail::PairFrame<T>& F, const detail::RayObject
   for (;;) {
     if (obj.separated || !obj.better(best, cur)) return cur;
     cur = best;
-    best = detail::MFace<T>();
+    best = MFace<T>();
     const auto vp = P.edgeVertices(cur.a);
     const auto vq = Q.edgeVertices(cur.b);
     for (int u : {vp.first, vp.second})
@@ -112,4 +111,5 @@ detail::MFace<T> searchEE(const detail::PairFrame<T>& F, const detail::RayObject
   }
 }
 
+}  // namespace detail
 }  // namespace mink

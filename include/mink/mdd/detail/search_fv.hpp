@@ -1,4 +1,4 @@
-// mink/mdd/search_fv.hpp — SEARCH-FV and SEARCH-VF of MDD-DUAL (Choi et al., seed 000,
+// mink/mdd/detail/search_fv.hpp — SEARCH-FV and SEARCH-VF of MDD-DUAL (Choi et al.,
 // section IV-B.1 and IV-B.2).
 //
 // SEARCH-FV walks the faces f_p of P; each stands for the FV face F(f_p, s_{−Q}(f_p)) of M.
@@ -27,20 +27,19 @@ struct SearchBudget {
   }
 };
 
-}  // namespace detail
 
 /// SEARCH-FV from face `start` of P. `hintQ` carries the −Q support vertex (warm start in,
 /// last one out). Returns the best FV face; `visited` counts faces of M evaluated.
 template <class T>
-detail::MFace<T> searchFV(const detail::PairFrame<T>& F, const detail::RayObjective<T>& obj, int start,
-                          int& hintQ, detail::EpochMarks& marks, detail::SearchBudget& budget, int& visited) {
+MFace<T> searchFV(const PairFrame<T>& F, const RayObjective<T>& obj, int start,
+                          int& hintQ, EpochMarks& marks, SearchBudget& budget, int& visited) {
   const ConvexPolyhedron<T>& P = F.P();
   marks.reset(static_cast<std::size_t>(P.numFaces()));
   marks.mark(start);
-  detail::MFace<T> cur = F.fv(start, hintQ);
+  MFace<T> cur = F.fv(start, hintQ);
   ++visited;
   for (;;) {
-    detail::MFace<T> best;
+    MFace<T> best;
     // The faces around the current one in cyclic order: each support query warm-starts
     // from the last one's answer, a neighbour of it. From cur.b every time, the faces
     // around an n-gon cap cost n steps each (n² for the ring).
@@ -49,7 +48,7 @@ detail::MFace<T> searchFV(const detail::PairFrame<T>& F, const detail::RayObject
       for (int g : P.vertexFaces(v)) {
         if (!marks.mark(g)) continue;
         if (!budget.take()) return cur;
-        const detail::MFace<T> f = F.fv(g, h);
+        const MFace<T> f = F.fv(g, h);
         ++visited;
         if (obj.better(f, best)) best = f;
       }
@@ -61,21 +60,21 @@ detail::MFace<T> searchFV(const detail::PairFrame<T>& F, const detail::RayObject
 
 /// SEARCH-VF from face `start` of Q (roles of P and −Q exchanged).
 template <class T>
-detail::MFace<T> searchVF(const detail::PairFrame<T>& F, const detail::RayObjective<T>& obj, int start,
-                          int& hintP, detail::EpochMarks& marks, detail::SearchBudget& budget, int& visited) {
+MFace<T> searchVF(const PairFrame<T>& F, const RayObjective<T>& obj, int start,
+                          int& hintP, EpochMarks& marks, SearchBudget& budget, int& visited) {
   const ConvexPolyhedron<T>& Q = F.Q();
   marks.reset(static_cast<std::size_t>(Q.numFaces()));
   marks.mark(start);
-  detail::MFace<T> cur = F.vf(start, hintP);
+  MFace<T> cur = F.vf(start, hintP);
   ++visited;
   for (;;) {
-    detail::MFace<T> best;
+    MFace<T> best;
     int h = cur.a;  // chained, as in searchFV
     for (int v : Q.faceVertices(cur.b)) {
       for (int g : Q.vertexFaces(v)) {
         if (!marks.mark(g)) continue;
         if (!budget.take()) return cur;
-        const detail::MFace<T> f = F.vf(g, h);
+        const MFace<T> f = F.vf(g, h);
         ++visited;
         if (obj.better(f, best)) best = f;
       }
@@ -85,4 +84,5 @@ detail::MFace<T> searchVF(const detail::PairFrame<T>& F, const detail::RayObject
   }
 }
 
+}  // namespace detail
 }  // namespace mink

@@ -1,4 +1,4 @@
-// mink/mdd/centre_of_duality.hpp — Step 1 of MDD-DUAL (Choi et al., seed 000, section
+// mink/mdd/detail/centre_of_duality.hpp — Step 1 of MDD-DUAL (Choi et al., section
 // IV-A): does the line {t s} meet M = P ⊕ −Q, and if so, a point c of it strictly
 // inside M.
 //
@@ -28,6 +28,7 @@
 #include "mink/mdd/detail/contact_set.hpp"
 
 namespace mink {
+namespace detail {
 
 template <class T>
 struct CentreOfDuality {
@@ -41,7 +42,6 @@ struct CentreOfDuality {
   Vec3<T> w = Vec3<T>::Zero();
 };
 
-namespace detail {
 
 template <class T>
 using Pt2 = std::pair<T, T>;
@@ -59,15 +59,13 @@ T dot2(const Pt2<T>& a, const Pt2<T>& b) {
   return a.first * b.first + a.second * b.second;
 }
 
-}  // namespace detail
 
 /// Step 1 for direction s (frame of P). hintP / hintQ: support vertex hints (in and out).
 template <class T>
-CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>& s, int& hintP, int& hintQ) {
-  using detail::Pt2;
+CentreOfDuality<T> centreOfDuality(const PairFrame<T>& F, const Vec3<T>& s, int& hintP, int& hintQ) {
   using Kind = typename CentreOfDuality<T>::Kind;
   CentreOfDuality<T> out;
-  const auto basis = detail::orthogonalBasis(s);
+  const auto basis = orthogonalBasis(s);
   const Vec3<T>& u1 = basis.first;
   const Vec3<T>& u2 = basis.second;
   // In units of 2^e for a scene far from unit order (PairFrame::unitScaleExponent;
@@ -113,16 +111,16 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
   Vec3<T> X1 = support(r);
   Pt2<T> v1 = proj(X1);
   {
-    const T h = detail::dot2(r, v1);  // support value; the origin's value is 0
+    const T h = dot2(r, v1);  // support value; the origin's value is 0
     if (h < T(0)) return outside(r);
     if (h == T(0)) return boundary(r);
   }
   // Origin on the segment v0–v1: inside (v1 is in M', v0 interior).
-  const Pt2<T> d01 = detail::sub2(v1, v0);
-  const T side = detail::cross2(d01, r);
+  const Pt2<T> d01 = sub2(v1, v0);
+  const T side = cross2(d01, r);
   if (side == T(0)) {
     // origin = v0 + λ (v1 − v0) with λ = |v0|² / (r·(v1 − v0)) in (0, 1)
-    const T lambda = detail::dot2(r, r) / detail::dot2(r, d01);
+    const T lambda = dot2(r, r) / dot2(r, d01);
     out.kind = Kind::Interior;
     out.c = x0 + lambda * (X1 - x0);
     return out;
@@ -133,7 +131,7 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
   Vec3<T> X2 = support(n);
   Pt2<T> v2 = proj(X2);
   {
-    const T h = detail::dot2(n, v2);
+    const T h = dot2(n, v2);
     if (h < T(0)) return outside(n);
     if (h == T(0)) return boundary(n);
   }
@@ -145,15 +143,15 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
       defaults::kMddPortalFactor * (F.P().numVertices() + F.Q().numVertices() + 16);
   for (long long it = 0; it < cap; ++it) {
     // Keep the origin inside the cone (v0; v1, v2): rotate the portal until it is.
-    const T o1 = detail::cross2(detail::sub2(v1, v0), r);  // >= 0: origin left of v0->v1
-    const T o2 = detail::cross2(r, detail::sub2(v2, v0));  // >= 0: origin right of v0->v2
+    const T o1 = cross2(sub2(v1, v0), r);  // >= 0: origin left of v0->v1
+    const T o2 = cross2(r, sub2(v2, v0));  // >= 0: origin right of v0->v2
     if (o1 < T(0)) {
       // Origin clockwise of v1: new v1 from the outer normal of v0 -> v1 (right side).
-      const Pt2<T> d = detail::sub2(v1, v0);
+      const Pt2<T> d = sub2(v1, v0);
       const Pt2<T> nn(d.second, -d.first);
       const Vec3<T> X = support(nn);
       const Pt2<T> v = proj(X);
-      const T h = detail::dot2(nn, v);
+      const T h = dot2(nn, v);
       if (h < T(0)) return outside(nn);
       if (h == T(0)) return boundary(nn);
       v2 = v1;
@@ -163,11 +161,11 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
       continue;
     }
     if (o2 < T(0)) {
-      const Pt2<T> d = detail::sub2(v2, v0);
+      const Pt2<T> d = sub2(v2, v0);
       const Pt2<T> nn(-d.second, d.first);
       const Vec3<T> X = support(nn);
       const Pt2<T> v = proj(X);
-      const T h = detail::dot2(nn, v);
+      const T h = dot2(nn, v);
       if (h < T(0)) return outside(nn);
       if (h == T(0)) return boundary(nn);
       v1 = v2;
@@ -177,27 +175,27 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
       continue;
     }
     // Portal v1 -> v2, outer normal (away from v0).
-    const Pt2<T> e = detail::sub2(v2, v1);
+    const Pt2<T> e = sub2(v2, v1);
     const Pt2<T> np(e.second, -e.first);
-    const T originBeyond = -detail::dot2(np, v1);  // np·(0 − v1)
+    const T originBeyond = -dot2(np, v1);  // np·(0 − v1)
     if (originBeyond < T(0)) {
       // Strictly inside the triangle's portal side: barycentric lift.
-      const T A = detail::cross2(detail::sub2(v1, v0), detail::sub2(v2, v0));
-      const T l1 = detail::cross2(detail::sub2(zero, v0), detail::sub2(v2, v0)) / A;
-      const T l2 = detail::cross2(detail::sub2(v1, v0), detail::sub2(zero, v0)) / A;
+      const T A = cross2(sub2(v1, v0), sub2(v2, v0));
+      const T l1 = cross2(sub2(zero, v0), sub2(v2, v0)) / A;
+      const T l2 = cross2(sub2(v1, v0), sub2(zero, v0)) / A;
       out.kind = Kind::Interior;
       out.c = (T(1) - l1 - l2) * x0 + l1 * X1 + l2 * X2;
       return out;
     }
     const Vec3<T> X3 = support(np);
     const Pt2<T> v3 = proj(X3);
-    const T h = detail::dot2(np, v3);
+    const T h = dot2(np, v3);
     if (h < T(0)) return outside(np);  // the whole of M' is short of the origin
     // h == 0: the supporting line of M' along np passes through the origin (then, as
     // the origin is not strictly inside, it is on M' only if on that edge or vertex).
-    if (h == T(0) || !(detail::dot2(np, detail::sub2(v3, v1)) > T(0))) return boundary(np);
+    if (h == T(0) || !(dot2(np, sub2(v3, v1)) > T(0))) return boundary(np);
     // Replace the portal end on the same side of the ray v0 -> origin as v3.
-    if (detail::cross2(detail::sub2(v3, v0), r) >= T(0)) {
+    if (cross2(sub2(v3, v0), r) >= T(0)) {
       v1 = v3;
       X1 = X3;
     } else {
@@ -209,4 +207,5 @@ CentreOfDuality<T> centreOfDuality(const detail::PairFrame<T>& F, const Vec3<T>&
   return out;
 }
 
+}  // namespace detail
 }  // namespace mink

@@ -1,6 +1,6 @@
-// mink/mdd/exit_portal.hpp — an estimate of the face of M = P ⊕ −Q through which the ray
+// mink/mdd/detail/exit_portal.hpp — an estimate of the face of M = P ⊕ −Q through which the ray
 // c + u σ (u > 0, c strictly inside M) leaves M, from support queries only. It replaces
-// the initial-face heuristic of MDD-DUAL (Choi et al., seed 000, section VI-A), which
+// the initial-face heuristic of MDD-DUAL (Choi et al., section VI-A), which
 // starts the searches around P's support vertex along σ and so walks far on large or
 // elongated shapes.
 //
@@ -19,10 +19,11 @@
 #pragma once
 
 #include "mink/core/defaults.hpp"
-#include "mink/gauss_map/arc_intersection.hpp"  // detail::det3
+#include "mink/gauss_map/arc_intersection.hpp"  // det3
 #include "mink/mdd/detail/pair_frame.hpp"
 
 namespace mink {
+namespace detail {
 
 template <class T>
 struct ExitPortal {
@@ -39,7 +40,7 @@ struct ExitPortal {
 /// The exit-facet estimate for the ray c + u σ (frame of P). hintP / hintQ: support
 /// vertex hints (in and out).
 template <class T>
-ExitPortal<T> exitPortal(const detail::PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP,
+ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP,
                          int& hintQ) {
   struct Corner {
     Vec3<T> a;  // support point of M minus c
@@ -57,7 +58,7 @@ ExitPortal<T> exitPortal(const detail::PairFrame<T>& F, const Vec3<T>& c, const 
     hintP = far ? F.supportPFar(d, hintP) : F.supportPRefine(d, hintP);
     hintQ = far ? F.supportMinusQFar(d, hintQ) : F.supportMinusQRefine(d, hintQ);
     const Vec3<T> a = F.P().vertex(hintP) - F.q(hintQ) - c;
-    return Corner{e != 0 ? detail::timesPow2(a, -e) : a, hintP, hintQ};
+    return Corner{e != 0 ? timesPow2(a, -e) : a, hintP, hintQ};
   };
   auto finish = [&](const Vec3<T>& n, const Corner& at, bool converged) {
     out.normal = n;
@@ -79,13 +80,13 @@ ExitPortal<T> exitPortal(const detail::PairFrame<T>& F, const Vec3<T>& c, const 
   // Invariant from here: det(b1, b2, b3) > 0 (c strictly inside M makes every support
   // point strictly beyond c along its direction).
   while (out.steps < cap) {
-    if (detail::det3(b2.a, b3.a, sigma) < T(0)) {
+    if (det3(b2.a, b3.a, sigma) < T(0)) {
       const Vec3<T> n = b3.a.cross(b2.a);
       if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
       const Corner y = support(n, true);
       b1 = y;
       std::swap(b2, b3);
-    } else if (detail::det3(b3.a, b1.a, sigma) < T(0)) {
+    } else if (det3(b3.a, b1.a, sigma) < T(0)) {
       const Vec3<T> n = b1.a.cross(b3.a);
       if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
       const Corner y = support(n, true);
@@ -93,7 +94,7 @@ ExitPortal<T> exitPortal(const detail::PairFrame<T>& F, const Vec3<T>& c, const 
       b1 = b3;
       b2 = y;
       b3 = o1;
-    } else if (detail::det3(b1.a, b2.a, sigma) < T(0)) {
+    } else if (det3(b1.a, b2.a, sigma) < T(0)) {
       const Vec3<T> n = b2.a.cross(b1.a);
       if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
       const Corner y = support(n, true);
@@ -128,10 +129,11 @@ ExitPortal<T> exitPortal(const detail::PairFrame<T>& F, const Vec3<T>& c, const 
     } else {
       return finish(n, y, false);  // rounding: keep the best normal so far
     }
-    if (detail::det3(b1.a, b2.a, b3.a) < T(0)) std::swap(b2, b3);
+    if (det3(b1.a, b2.a, b3.a) < T(0)) std::swap(b2, b3);
   }
   const Vec3<T> n = (b2.a - b1.a).cross(b3.a - b1.a);
   return finish(n == Vec3<T>::Zero() ? sigma : n, b1, false);
 }
 
+}  // namespace detail
 }  // namespace mink

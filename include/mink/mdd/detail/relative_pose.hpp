@@ -1,0 +1,102 @@
+// mink/mdd/detail/relative_pose.hpp — the numeric preliminaries of an MDD query: the poses
+// checked (finite, orthonormal to rounding, proper), Q's pose relative to P's (the query
+// runs in P's frame), and |s| and unit normals for reporting (exact T has no sqrt).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "mink/mdd/detail/pair_frame.hpp"
+
+namespace mink {
+namespace detail {
+
+template <class T>
+void checkPose(const Pose<T>& pose, const char* name) {
+  for (int i = 0; i < 3; ++i) {
+    if (!ScalarTraits<T>::isFinite(pose.translation[i]))
+      throw InvalidInput(std::string("mdd: ") + name + ".translation is not finite");
+    if constexpr (!ScalarTraits<T>::isExact)
+      if (absValue(pose.translation[i]) > ScalarTraits<T>::largestCoordinate())
+        throw InvalidInput(std::string("mdd: ") + name +
+                           ".translation is out of range (above ScalarTraits::largestCoordinate())");
+    for (int j = 0; j < 3; ++j)
+      if (!ScalarTraits<T>::isFinite(pose.rotation(i, j)))
+        throw InvalidInput(std::string("mdd: ") + name + ".rotation is not finite");
+  }
+  const Mat3<T> E = pose.rotation.transpose() * pose.rotation - Mat3<T>::Identity();
+  T tol = T(0);
+  if constexpr (!ScalarTraits<T>::isExact)
+    tol = std::max(T(defaults::kRotationTolerance), T(100) * ScalarTraits<T>::epsilon());
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (absValue(E(i, j)) > tol)
+        throw InvalidInput(std::string("mdd: ") + name + ".rotation is not orthonormal");
+  if (!(pose.rotation.determinant() > T(0)))
+    throw InvalidInput(std::string("mdd: ") + name + ".rotation is a reflection (determinant < 0)");
+}
+
+/// Q's placement in P's frame (R, t) and P's world-to-local rotation RPt, after checking
+/// both poses; resets the cache's hints when it last served another pair of shapes.
+template <class T>
+struct RelativePose {
+  Mat3<T> RPt, R;
+  Vec3<T> t;
+};
+
+template <class T>
+RelativePose<T> relativePose(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                             const Pose<T>& poseQ, MddCache<T>& cache) {
+  checkPose(poseP, "poseP");
+  checkPose(poseQ, "poseQ");
+  for (const auto* X : {&P, &Q})
+    if (!X->edgesResolved())
+      throw InvalidInput(std::string("mdd: ") + (X == &P ? "P" : "Q") +
+                         " has an edge whose two face normals are opposite to rounding (a dihedral angle "
+                         "below about 64 eps, built with a hull tolerance of 0): too thin for the Gauss-map "
+                         "tests in this scalar type");
+  if (cache.shapeP != &P || cache.shapeQ != &Q) {
+    cache.faceP = cache.vertexP = cache.vertexQ = -1;
+    cache.exitFaces[0] = cache.exitFaces[1] = MddCachedFace{};
+    cache.shapeP = &P;
+    cache.shapeQ = &Q;
+  }
+  RelativePose<T> rel;
+  // P's inverse rotation, not its transpose: the two differ when the matrix is a rotation
+  // only up to rounding, and the inverse keeps the answer the exact one for the shapes
+  // as placed by the matrices given.
+  rel.RPt = poseP.rotation.inverse();
+  rel.R = rel.RPt * poseQ.rotation;
+  rel.t = rel.RPt * (poseQ.translation - poseP.translation);
+  return rel;
+}
+
+/// |s| for reporting. Exact T has no sqrt: exact when |s|^2 == 1, otherwise a Newton
+/// iterate accurate far beyond double precision (reported values only, never decisions).
+template <class T>
+T lengthOf(const Vec3<T>& s) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    const T n2 = s.squaredNorm();
+    if (n2 == T(1)) return T(1);
+    T x = std::max({absValue(s[0]), absValue(s[1]), absValue(s[2])});
+    for (int i = 0; i < 5; ++i) x = (x + n2 / x) / T(2);
+    return x;
+  } else {
+    return s.norm();
+  }
+}
+
+template <class T>
+Vec3<T> unitOrExact(const Vec3<T>& n) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    return n;
+  } else {
+    const Vec3<T> m = unitOrder(n);
+    const T len = m.norm();
+    return len > T(0) ? Vec3<T>(m / len) : m;
+  }
+}
+
+}  // namespace detail
+}  // namespace mink

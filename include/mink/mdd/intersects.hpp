@@ -1,0 +1,71 @@
+// mink/mdd/intersects.hpp — collision mode of MDD-DUAL (Choi et al., section V): do two
+// placed convex polyhedra share a point? The exit-face search run from an interior point
+// of M = P ⊕ −Q towards the origin, stopped at the first face that puts the origin outside.
+#pragma once
+
+#include "mink/mdd/detail/exit_face.hpp"
+#include "mink/mdd/detail/relative_pose.hpp"
+
+namespace mink {
+
+/// Collision mode (section V): do P and Q (closed sets) share a point? Touching counts.
+/// The centre of duality is any interior point of M: interior(P) − interior(Q); the
+/// search towards the origin stops at the first face with the origin strictly outside.
+/// Options as for mdd(): shapes within `touchTolerance` (a length; automatic by default)
+/// count as touching, hence intersecting; `maxVisits` / `maxExhaustivePairs` cap the
+/// search, and a search that hits a cap answers `true` (the conservative answer for
+/// collision detection); `useHierarchy` as in mdd(). Throws InvalidInput for non-finite /
+/// non-orthonormal poses and a NaN touchTolerance.
+template <class T>
+bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                const Pose<T>& poseQ, MddCache<T>& cache, const MddOptions<T>& options = {}) {
+  if (!(options.touchTolerance == options.touchTolerance))
+    throw InvalidInput("intersects: options.touchTolerance is NaN (use a negative value for automatic)");
+  const detail::RelativePose<T> rel = detail::relativePose(P, poseP, Q, poseQ, cache);
+  const Mat3<T>& R = rel.R;
+  const Vec3<T>& t = rel.t;
+  detail::PairFrame<T> F(P, Q, R, t, options.useHierarchy);
+  const Vec3<T> x0 = P.interiorPoint() - (R * Q.interiorPoint() + t);
+  if (x0 == Vec3<T>::Zero()) return true;
+  MddResult<T> res;
+  detail::ExitFaceSearch<T> query(F, x0, cache, options, res);
+  bool separated = false;
+  detail::MFace<T> separator;
+  // The search direction at unit order (exact scaling, and the searches compare ratios
+  // homogeneous in it): for shapes of 1e-224, x0 times the faces' offsets underflowed and
+  // the searches' comparisons were all false (overlap reported for shapes apart).
+  const Vec3<T> towards = detail::unitOrder(Vec3<T>(-x0));
+  detail::MFace<T> f = query.exitFace(towards, x0, true, &separated, &separator);
+  if (separated) {
+    if constexpr (ScalarTraits<T>::isExact) {
+      return false;
+    } else {
+      // "Apart" is certified by the separating-axis test along the stopping face's normal
+      // N: the support of M along N, from support queries (not from the face's own k,
+      // which is only as good as the face: an EE face declared by rounding had a plane
+      // through the origin and k = -9e-236, for shapes overlapping by 2e25), must be
+      // below -tolerance. Otherwise the search is run to its end.
+      const Vec3<T> N = separator.N;
+      const int vp = F.supportP(N, cache.vertexP), vq = F.supportMinusQ(N, cache.vertexQ);
+      const T h = N.dot(P.vertex(vp) - F.q(vq));
+      if (h < -query.check().tolerance() * N.norm()) return false;
+      f = query.exitFace(towards, x0);
+    }
+  }
+  if (!f.valid()) return true;
+  // Exit parameter along x0 (x0 itself is at 1): the origin is in M iff it is <= 0.
+  const T param = f.k / f.N.dot(x0);
+  T tol = T(0);
+  if constexpr (!ScalarTraits<T>::isExact) tol = query.check().tolerance() / x0.norm();
+  return param <= tol;
+}
+
+/// intersects() without a coherence cache.
+template <class T>
+bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                const Pose<T>& poseQ, const MddOptions<T>& options = {}) {
+  MddCache<T> cache;
+  return intersects(P, poseP, Q, poseQ, cache, options);
+}
+
+}  // namespace mink
