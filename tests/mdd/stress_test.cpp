@@ -51,6 +51,7 @@
 
 #include "support/exact_placement.hpp"
 #include "support/mdd_reference.hpp"
+#include "support/mdd_status.hpp"
 #include "support/degenerate_contacts.hpp"
 #include "support/paper_shapes.hpp"
 
@@ -164,26 +165,6 @@ std::vector<Vec3r> placedExact(const std::vector<V3<T>>& pts, const M3<T>& rot) 
   return out;
 }
 
-MddStatus toMink(MddRefStatus s) {
-  switch (s) {
-    case MddRefStatus::Separated: return MddStatus::Separated;
-    case MddRefStatus::Touching: return MddStatus::Touching;
-    case MddRefStatus::Penetrating: return MddStatus::Penetrating;
-    default: return MddStatus::NoContact;
-  }
-}
-
-const char* name(MddStatus s) {
-  switch (s) {
-    case MddStatus::Separated: return "Separated";
-    case MddStatus::Touching: return "Touching";
-    case MddStatus::Penetrating: return "Penetrating";
-    case MddStatus::NoContact: return "NoContact";
-    case MddStatus::IterationLimit: return "IterationLimit";
-  }
-  return "?";
-}
-
 /// Largest signed distance of x from the facet planes of M (length units): ≤ 0 inside,
 /// exactly minus the distance to the boundary for interior points, and a lower bound on
 /// the distance for exterior points.
@@ -237,7 +218,7 @@ void checkOne(Family& fam, const mink::MddResult<T>& r, const MinkowskiDifferenc
   if (refContact && e.status == MddRefStatus::Penetrating && std::abs(-e.lo.length - e.hi.length) <= 2 * B)
     err = std::min(std::abs(tr - e.lo.length), std::abs(tr - e.hi.length));
   const bool exactGraze = e.lineMeetsM && (e.tLo == e.tHi || e.lineInFacetPlane);
-  const bool statusDiffers = refContact && minkContact && r.status != toMink(e.status) &&
+  const bool statusDiffers = refContact && minkContact && r.status != mink_test::toMinkStatus(e.status) &&
                              std::abs(e.translation) > tau + B;
   const bool suspicious = exactGraze || minkContact != refContact || (refContact && err > B) || statusDiffers;
   if (fam.backward || (suspicious && (exactGraze || illPosed(ref, s, u, e, B)))) {
@@ -247,7 +228,7 @@ void checkOne(Family& fam, const mink::MddResult<T>& r, const MinkowskiDifferenc
       const double dist = facetPlaneDistance(ref, Vec3r(u + s * p));
       if (fam.backward) fam.errors.push_back(std::abs(dist) / L);
       EXPECT_LE(std::abs(dist), B) << "graze: the reported point is " << dist << " from the boundary of M (mink "
-                                   << name(r.status) << " " << tr << ", exact "
+                                   << mink_test::statusName(r.status) << " " << tr << ", exact "
                                    << mink_test::toString(e.status) << " " << e.translation << ")";
     }
     return;
@@ -261,12 +242,12 @@ void checkOne(Family& fam, const mink::MddResult<T>& r, const MinkowskiDifferenc
     return;
   }
   fam.errors.push_back(err / L);
-  EXPECT_LE(err, B) << "mink " << name(r.status) << " " << tr << ", exact " << mink_test::toString(e.status) << " "
+  EXPECT_LE(err, B) << "mink " << mink_test::statusName(r.status) << " " << tr << ", exact " << mink_test::toString(e.status) << " "
                     << e.translation << " (error " << err / L << " L, L = " << L << ")";
   if (std::abs(e.translation) <= tau + B) {
     ++fam.band;
   } else {
-    EXPECT_EQ(r.status, toMink(e.status)) << "mink " << tr << ", exact " << e.translation << ", tau " << tau;
+    EXPECT_EQ(r.status, mink_test::toMinkStatus(e.status)) << "mink " << tr << ", exact " << e.translation << ", tau " << tau;
   }
 }
 
@@ -901,7 +882,7 @@ TEST(MddStress, LinesInFacetPlanes) {
     const auto e = b.ref.query(exactOf<double>(Vec3d(-1, -1, 3)), exactOf<double>(Vec3d(1, 1, 0)));
     std::printf("[stress] fuzz scene: exact %s %.17g (tLo %.17g, tHi %.17g, in facet plane %d), mink %s %.17g\n",
                 mink_test::toString(e.status), e.translation, CGAL::to_double(e.tLo), CGAL::to_double(e.tHi),
-                int(e.lineInFacetPlane), name(r[0].status), r[0].translation);
+                int(e.lineInFacetPlane), mink_test::statusName(r[0].status), r[0].translation);
   }
   struct Pair {
     std::string name;
@@ -1099,7 +1080,7 @@ TEST(MddStress, FuzzerScenes) {
     const Vec3d t(-5.3660187404602766e-11, -5.3660187404602766e-11, -5.3660187404602766e-11);
     const auto r = scene("1e28 against 2, chord 5 long", P, Q, Mat3d::Identity(), RQ, Vec3d(-2, -2, -2), t, t,
                          1.35e28, 0.0);
-    EXPECT_LT(std::abs(r.translation), 1e13) << name(r.status);  // the chord's ends: 5.2 and -2.5e9
+    EXPECT_LT(std::abs(r.translation), 1e13) << mink_test::statusName(r.status);  // the chord's ends: 5.2 and -2.5e9
   }
   {
     // sheet_q_ee_arcs_from_edges: Q a sheet 5e-11 thick (its edges' face normals 5e-11 from

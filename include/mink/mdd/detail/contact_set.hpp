@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "mink/core/orientation.hpp"
 #include "mink/mdd/detail/pair_frame.hpp"
 
 namespace mink {
@@ -42,10 +43,11 @@ bool supportSet(const ConvexPolyhedron<T>& X, int v0, const Value& value, const 
   return maximiser;
 }
 
-/// 2-D orientation sign of (a, b, c).
+/// 2-D orientation sign of (a, b, c), exact on the coordinates given (orient2d: a
+/// floating-point filter, then expansion arithmetic).
 template <class T>
 int orient2(const std::pair<T, T>& a, const std::pair<T, T>& b, const std::pair<T, T>& c) {
-  return detail::sign((b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first));
+  return orient2d<T>(a.first, a.second, b.first, b.second, c.first, c.second);
 }
 
 /// Where the origin lies in the closed convex hull of 2-D points `pts` (ids carried

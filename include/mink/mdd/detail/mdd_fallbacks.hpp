@@ -103,7 +103,16 @@ class MddFallbacks {
     // (its vertices in cyclic order) meets the line where its edges cross b == 0.
     const Vec3<T>& s = check_.direction();
     check_.facetPolygon(check_.inUnits(s), check_.inUnits(Vec3<T>(w.cross(s))), Vec3<T>::Zero());
-    const auto& ab = cache_.points2;
+    // A vertex y of the facet lies on the line iff y × s = 0: decided exactly on the
+    // numbers given (the three 2-D orientations of 0, s, y), not by its b, which carries
+    // the rounding of w. Integer shapes touching at one point (y = s exactly) had b =
+    // 2e-16, no crossing, and the contact was missed (NoContact for Separated at 1).
+    auto& ab = cache_.points2;
+    const int nq = static_cast<int>(cache_.setQ.size());
+    for (auto& vertex : ab) {
+      const Vec3<T> y = P.vertex(cache_.setP[vertex.second / nq]) - F_.q(cache_.setQ[vertex.second % nq]);
+      if (onLine(y, s)) vertex.first.second = T(0);
+    }
     bool any = false;
     T amin = T(0), amax = T(0);
     auto take = [&](const T& a) {
@@ -130,6 +139,15 @@ class MddFallbacks {
   }
 
  private:
+  /// Is y on the line {t s}, exactly (y × s = 0: its three components' signs)?
+  static bool onLine(const Vec3<T>& y, const Vec3<T>& s) {
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      if (orient2d<T>(T(0), T(0), s[i], s[j], y[i], y[j]) != 0) return false;
+    }
+    return true;
+  }
+
   ExitFaceSearch<T>& search_;
   FacetCheck<T>& check_;
   MddCache<T>& cache_;
