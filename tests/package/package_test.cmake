@@ -47,10 +47,12 @@ step("build mink" ${CMAKE_COMMAND} --build "${mink_build}")
 step("install mink" ${CMAKE_COMMAND} --install "${mink_build}" --prefix "${prefix}")
 
 # 2. The installed tree: headers under include/mink, CMake files under share/cmake/mink,
-#    nothing else, and no trace of a test, benchmark or example dependency.
+#    the optional instantiation source share/mink/mink_instantiations.cpp, nothing else,
+#    and no trace of a test, benchmark or example dependency.
 file(GLOB_RECURSE installed RELATIVE "${prefix}" "${prefix}/*")
 foreach(f IN LISTS installed)
-  if(NOT f MATCHES "^include/mink/.*\\.(hpp|hxx|h|inl)$" AND NOT f MATCHES "^share/cmake/mink/[^/]+\\.cmake$")
+  if(NOT f MATCHES "^include/mink/.*\\.(hpp|hxx|h|inl)$" AND NOT f MATCHES "^share/cmake/mink/[^/]+\\.cmake$"
+     AND NOT f STREQUAL "share/mink/mink_instantiations.cpp")
     message(FATAL_ERROR "package test: unexpected installed file ${prefix}/${f}")
   endif()
 endforeach()

@@ -35,6 +35,17 @@ int main() {
     std::printf("consumer: support in (1, 2, 3) is not the corner (1, 1, 1)\n");
     ++failures;
   }
+  // A query through the entry points compiled once in mink_instantiations.cpp: the second
+  // cube, centred at x = 3, touches the first after moving 1 along -x.
+  mink::Pose<double> at3;
+  at3.translation = mink::Vec3<double>(3.0, 0.5, 0.0);
+  const auto r = mink::mdd(cube, mink::Pose<double>(), cube, at3, mink::Vec3<double>(-1.0, 0.0, 0.0));
+  if (r.status != mink::MddStatus::Separated || r.translation != 1.0 ||
+      mink::intersects(cube, mink::Pose<double>(), cube, at3)) {
+    std::printf("consumer: mdd of two cubes 1 apart gave status %d, translation %g\n", static_cast<int>(r.status),
+                r.translation);
+    ++failures;
+  }
   try {
     mink::ConvexPolyhedron<double>::fromPoints({points[0], points[1], points[2]});
     std::printf("consumer: three points were accepted as a polyhedron\n");
