@@ -53,9 +53,3 @@
 #include "mink/io/obj.hpp"
 #include "mink/io/off.hpp"
 #include "mink/io/triangle_mesh_io.hpp"
-
-// With MINK_EXTERN_TEMPLATES defined, the float / double entry points are declared
-// `extern template` (compiled once, in src/mink_instantiations.cpp; see the header).
-#ifdef MINK_EXTERN_TEMPLATES
-#include "mink/extern_templates.hpp"
-#endif

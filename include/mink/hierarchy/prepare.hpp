@@ -53,3 +53,8 @@ bool isPrepared(const ConvexPolyhedron<T>& P) {
 }
 
 }  // namespace mink
+
+// MINK_EXTERN_TEMPLATES: the float / double instantiations are compiled elsewhere
+// (src/mink_instantiations.cpp; see mink/extern_templates.hpp).
+#include "mink/core/detail/instantiation_lists.hpp"
+MINK_DETAIL_DECLARE_EXTERN(PREPARE)

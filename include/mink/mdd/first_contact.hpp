@@ -91,3 +91,8 @@ FirstContact<T> firstContact(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
 }
 
 }  // namespace mink
+
+// MINK_EXTERN_TEMPLATES: the float / double instantiations are compiled elsewhere
+// (src/mink_instantiations.cpp; see mink/extern_templates.hpp).
+#include "mink/core/detail/instantiation_lists.hpp"
+MINK_DETAIL_DECLARE_EXTERN(FIRST_CONTACT)

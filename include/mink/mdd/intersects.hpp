@@ -69,3 +69,8 @@ bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Convex
 }
 
 }  // namespace mink
+
+// MINK_EXTERN_TEMPLATES: the float / double instantiations are compiled elsewhere
+// (src/mink_instantiations.cpp; see mink/extern_templates.hpp).
+#include "mink/core/detail/instantiation_lists.hpp"
+MINK_DETAIL_DECLARE_EXTERN(INTERSECTS)

@@ -78,4 +78,9 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
 
 }  // namespace mink
 
+// MINK_EXTERN_TEMPLATES: the float / double instantiations are compiled elsewhere
+// (src/mink_instantiations.cpp; see mink/extern_templates.hpp).
+#include "mink/core/detail/instantiation_lists.hpp"
+MINK_DETAIL_DECLARE_EXTERN(MDD)
+
 #include "mink/mdd/intersects.hpp"

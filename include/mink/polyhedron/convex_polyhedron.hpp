@@ -273,3 +273,8 @@ class ConvexPolyhedron {
 }  // namespace mink
 
 #include "mink/polyhedron/detail/convex_polyhedron_impl.hpp"
+
+// MINK_EXTERN_TEMPLATES: the float / double instantiations are compiled elsewhere
+// (src/mink_instantiations.cpp; see mink/extern_templates.hpp).
+#include "mink/core/detail/instantiation_lists.hpp"
+MINK_DETAIL_DECLARE_EXTERN(POLYHEDRON)
