@@ -37,17 +37,6 @@ namespace {
 using V = Eigen::Vector3d;
 using M3 = Eigen::Matrix3d;
 
-const char* statusName(mink::CpdStatus s) {
-  switch (s) {
-    case mink::CpdStatus::Separated:
-      return "Separated";
-    case mink::CpdStatus::Penetrating:
-      return "Penetrating";
-    default:
-      return "Approximate";
-  }
-}
-
 /// The angle in degrees between two force directions (0 when either force is zero).
 double turnDegrees(const V& a, const V& b) {
   if (a.isZero() || b.isZero()) return 0;
@@ -129,8 +118,8 @@ int main(int argc, char** argv) {
     lastCpd = r.direction;
     lastPd = e.direction;
     if (f % std::max(1, frames / 12) == 0 || f == frames - 1 || turnPd > 30)
-      std::printf("%5d  %-11s %7.4f  (%7.1f, %7.1f, %7.1f) %6.2f°   %-11s %7.4f %6.2f°%s\n", f, statusName(r.status),
-                  r.depth, force.x(), force.y(), force.z(), turnCpd, statusName(e.status), e.depth, turnPd,
+      std::printf("%5d  %-11s %7.4f  (%7.1f, %7.1f, %7.1f) %6.2f°   %-11s %7.4f %6.2f°%s\n", f, mink::toString(r.status),
+                  r.depth, force.x(), force.y(), force.z(), turnCpd, mink::toString(e.status), e.depth, turnPd,
                   turnPd > 30 ? "   <- the Euclidean direction jumps" : "");
   }
 

@@ -21,42 +21,12 @@
 
 namespace {
 
-const char* statusName(mink::MddStatus s) {
-  switch (s) {
-    case mink::MddStatus::Separated:
-      return "Separated";
-    case mink::MddStatus::Touching:
-      return "Touching";
-    case mink::MddStatus::Penetrating:
-      return "Penetrating";
-    case mink::MddStatus::NoContact:
-      return "NoContact";
-    default:
-      return "IterationLimit";
-  }
-}
-
-const char* faceName(mink::MddFaceType t) {
-  switch (t) {
-    case mink::MddFaceType::FV:
-      return "FV";
-    case mink::MddFaceType::VF:
-      return "VF";
-    case mink::MddFaceType::EE:
-      return "EE";
-    case mink::MddFaceType::Grazing:
-      return "grazing";
-    default:
-      return "-";
-  }
-}
-
 void printOne(const char* title, const mink::MddResult<double>& r, const Eigen::Vector3d& s) {
   std::printf("  %s\n", title);
   std::printf("    s = (%.3f, %.3f, %.3f)  status %-11s distance %+.12f  translation %+.12f\n", s.x(), s.y(), s.z(),
-              statusName(r.status), r.distance, r.translation);
+              mink::toString(r.status), r.distance, r.translation);
   if (r.status == mink::MddStatus::NoContact) return;
-  std::printf("    face of M: %s (P feature %d, Q feature %d), normal (%.4f, %.4f, %.4f)\n", faceName(r.faceType),
+  std::printf("    face of M: %s (P feature %d, Q feature %d), normal (%.4f, %.4f, %.4f)\n", mink::toString(r.faceType),
               r.featureP, r.featureQ, r.normal.x(), r.normal.y(), r.normal.z());
   std::printf("    witness on P (%.4f, %.4f, %.4f), on Q (%.4f, %.4f, %.4f); faces visited FV %d VF %d EE %d\n",
               r.witnessP.x(), r.witnessP.y(), r.witnessP.z(), r.witnessQ.x(), r.witnessQ.y(), r.witnessQ.z(),

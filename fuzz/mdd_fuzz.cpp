@@ -376,17 +376,6 @@ LD outside(const Placed& S, const Shape& shape, const mink::Pose<double>& pose, 
   return m;
 }
 
-const char* name(MddStatus s) {
-  switch (s) {
-    case MddStatus::Separated: return "Separated";
-    case MddStatus::Touching: return "Touching";
-    case MddStatus::Penetrating: return "Penetrating";
-    case MddStatus::NoContact: return "NoContact";
-    case MddStatus::IterationLimit: return "IterationLimit";
-  }
-  return "?";
-}
-
 // Builds a shape in the decoded mode; false when mink rejected it (InvalidInput).
 bool buildShape(Decoder& in, const std::vector<V>& pts, Shape& out) {
   const int mode = in.u8() % 5;
@@ -542,7 +531,7 @@ void checkQuery(const Shape& SP, const Shape& SQ, const mink::Pose<double>& pose
     std::snprintf(buf, sizeof buf,
                   "%s: status %s translation %.17g parameter %.17g face type %d (P %d, Q %d) normal %.17g %.17g %.17g "
                   "fallback %d; %s",
-                  res == &cold ? "cold" : "warm", name(st), res->translation, res->parameter,
+                  res == &cold ? "cold" : "warm", mink::toString(st), res->translation, res->parameter,
                   static_cast<int>(res->faceType), res->featureP, res->featureQ, res->normal[0], res->normal[1],
                   res->normal[2], static_cast<int>(res->usedFallback), ctx);
     const std::string where = buf;

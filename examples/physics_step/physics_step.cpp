@@ -111,28 +111,6 @@ struct Row {
   const char* minkPath;
 };
 
-const char* statusName(mink::MddStatus s) {
-  switch (s) {
-    case mink::MddStatus::Separated: return "Separated";
-    case mink::MddStatus::Touching: return "Touching";
-    case mink::MddStatus::Penetrating: return "Penetrating";
-    case mink::MddStatus::NoContact: return "NoContact";
-    default: return "IterationLimit";
-  }
-}
-
-const char* pathName(mink::MddPath p) {
-  switch (p) {
-    case mink::MddPath::Cache: return "Cache";
-    case mink::MddPath::Certificate: return "Certificate";
-    case mink::MddPath::Search: return "Search";
-    case mink::MddPath::Exhaustive: return "Exhaustive";
-    case mink::MddPath::Chord: return "Chord";
-    case mink::MddPath::Grazing: return "Grazing";
-    default: return "None";
-  }
-}
-
 double median(std::vector<double> v) {
   if (v.empty()) return std::nan("");
   std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
@@ -234,8 +212,8 @@ int main(int argc, char** argv) {
       const auto t1 = Clock::now();
       rows[i].us[kMink] = microseconds(t0, t1);
       rows[i].answer[kMink] = a.impact;
-      rows[i].minkStatus = statusName(a.result.status);
-      rows[i].minkPath = pathName(a.result.path);
+      rows[i].minkStatus = mink::toString(a.result.status);
+      rows[i].minkPath = mink::toString(a.result.path);
       replayMismatches += a.impact.hit != driven[i].hit || a.impact.toi != driven[i].toi;
     }
   }

@@ -74,6 +74,14 @@ void expectPhongCondition(const mink::CpdResult<double>& r) {
   EXPECT_GT(r.normal.dot(r.direction), 0);
 }
 
+TEST(ContinuousPenetrationDepth, StatusNames) {
+  static_assert(mink::toString(mink::CpdStatus::Approximate)[0] == 'A', "usable in constant expressions");
+  EXPECT_STREQ(mink::toString(mink::CpdStatus::Separated), "Separated");
+  EXPECT_STREQ(mink::toString(mink::CpdStatus::Penetrating), "Penetrating");
+  EXPECT_STREQ(mink::toString(mink::CpdStatus::Approximate), "Approximate");
+  EXPECT_STREQ(mink::toString(static_cast<mink::CpdStatus>(7)), "?");
+}
+
 TEST(ContinuousPenetrationDepth, AxisAlignedBoxesAgainstTheClosedForm) {
   const V loA(-1, -0.75, -0.5), hiA(1, 0.75, 0.5), loB(-0.4, -0.3, -0.6), hiB(0.4, 0.3, 0.6);
   const Mesh A = mesh(mink_test::boxShape(loA, hiA)), B = mesh(mink_test::boxShape(loB, hiB));

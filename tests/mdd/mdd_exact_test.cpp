@@ -280,9 +280,9 @@ TEST(MddExact, DoubleAnswersExactlyOnExactInputs) {
     }
     if (!ok) {
       ++wrong;
-      ADD_FAILURE() << "seed " << seed << " case " << tried << ": mdd<double> " << mink_test::statusName(r.status)
+      ADD_FAILURE() << "seed " << seed << " case " << tried << ": mdd<double> " << mink::toString(r.status)
                     << " at " << r.parameter << " (path " << static_cast<int>(r.path) << "), exact "
-                    << mink_test::statusName(want) << " at " << CGAL::to_double(e.t);
+                    << mink::toString(want) << " at " << CGAL::to_double(e.t);
     }
   }
   std::printf("[mdd<double>/integer axis turns] %d queries (%d with contact), %d answered differently from the "

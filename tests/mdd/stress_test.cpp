@@ -228,7 +228,7 @@ void checkOne(Family& fam, const mink::MddResult<T>& r, const MinkowskiDifferenc
       const double dist = facetPlaneDistance(ref, Vec3r(u + s * p));
       if (fam.backward) fam.errors.push_back(std::abs(dist) / L);
       EXPECT_LE(std::abs(dist), B) << "graze: the reported point is " << dist << " from the boundary of M (mink "
-                                   << mink_test::statusName(r.status) << " " << tr << ", exact "
+                                   << mink::toString(r.status) << " " << tr << ", exact "
                                    << mink_test::toString(e.status) << " " << e.translation << ")";
     }
     return;
@@ -242,7 +242,7 @@ void checkOne(Family& fam, const mink::MddResult<T>& r, const MinkowskiDifferenc
     return;
   }
   fam.errors.push_back(err / L);
-  EXPECT_LE(err, B) << "mink " << mink_test::statusName(r.status) << " " << tr << ", exact " << mink_test::toString(e.status) << " "
+  EXPECT_LE(err, B) << "mink " << mink::toString(r.status) << " " << tr << ", exact " << mink_test::toString(e.status) << " "
                     << e.translation << " (error " << err / L << " L, L = " << L << ")";
   if (std::abs(e.translation) <= tau + B) {
     ++fam.band;
@@ -882,7 +882,7 @@ TEST(MddStress, LinesInFacetPlanes) {
     const auto e = b.ref.query(exactOf<double>(Vec3d(-1, -1, 3)), exactOf<double>(Vec3d(1, 1, 0)));
     std::printf("[stress] fuzz scene: exact %s %.17g (tLo %.17g, tHi %.17g, in facet plane %d), mink %s %.17g\n",
                 mink_test::toString(e.status), e.translation, CGAL::to_double(e.tLo), CGAL::to_double(e.tHi),
-                int(e.lineInFacetPlane), mink_test::statusName(r[0].status), r[0].translation);
+                int(e.lineInFacetPlane), mink::toString(r[0].status), r[0].translation);
   }
   struct Pair {
     std::string name;
@@ -1080,7 +1080,7 @@ TEST(MddStress, FuzzerScenes) {
     const Vec3d t(-5.3660187404602766e-11, -5.3660187404602766e-11, -5.3660187404602766e-11);
     const auto r = scene("1e28 against 2, chord 5 long", P, Q, Mat3d::Identity(), RQ, Vec3d(-2, -2, -2), t, t,
                          1.35e28, 0.0);
-    EXPECT_LT(std::abs(r.translation), 1e13) << mink_test::statusName(r.status);  // the chord's ends: 5.2 and -2.5e9
+    EXPECT_LT(std::abs(r.translation), 1e13) << mink::toString(r.status);  // the chord's ends: 5.2 and -2.5e9
   }
   {
     // sheet_q_ee_arcs_from_edges: Q a sheet 5e-11 thick (its edges' face normals 5e-11 from

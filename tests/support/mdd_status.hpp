@@ -20,20 +20,4 @@ inline mink::MddStatus toMinkStatus(MddRefStatus s) {
   }
 }
 
-inline const char* statusName(mink::MddStatus s) {
-  switch (s) {
-    case mink::MddStatus::Separated:
-      return "Separated";
-    case mink::MddStatus::Touching:
-      return "Touching";
-    case mink::MddStatus::Penetrating:
-      return "Penetrating";
-    case mink::MddStatus::NoContact:
-      return "NoContact";
-    case mink::MddStatus::IterationLimit:
-      return "IterationLimit";
-  }
-  return "?";
-}
-
-}  // namespace mink_test
+inline }  // namespace mink_test

@@ -73,6 +73,17 @@ enum class CpdStatus {
                 ///< the scene's size outside M)
 };
 
+/// The enumerator's name ("Separated", "Penetrating", "Approximate"), for logs and
+/// messages; "?" for a value outside the enumeration.
+constexpr const char* toString(CpdStatus s) noexcept {
+  switch (s) {
+    case CpdStatus::Separated: return "Separated";
+    case CpdStatus::Penetrating: return "Penetrating";
+    case CpdStatus::Approximate: return "Approximate";
+  }
+  return "?";
+}
+
 /// The answer of a CPD or PD query. World frame, length unit of the meshes.
 template <class T>
 struct CpdResult {

@@ -51,6 +51,45 @@ enum class MddFaceType {
            ///< featureP / featureQ are vertices of P and Q supporting that contact
 };
 
+/// The enumerator's name, as spelled in the code ("Separated", "Search", "EE", ...), for
+/// logs and messages; "?" for a value outside the enumeration.
+constexpr const char* toString(MddStatus s) noexcept {
+  switch (s) {
+    case MddStatus::Separated: return "Separated";
+    case MddStatus::Touching: return "Touching";
+    case MddStatus::Penetrating: return "Penetrating";
+    case MddStatus::NoContact: return "NoContact";
+    case MddStatus::IterationLimit: return "IterationLimit";
+  }
+  return "?";
+}
+
+/// \copydoc toString(MddStatus)
+constexpr const char* toString(MddPath p) noexcept {
+  switch (p) {
+    case MddPath::None: return "None";
+    case MddPath::Cache: return "Cache";
+    case MddPath::Certificate: return "Certificate";
+    case MddPath::Search: return "Search";
+    case MddPath::Exhaustive: return "Exhaustive";
+    case MddPath::Chord: return "Chord";
+    case MddPath::Grazing: return "Grazing";
+  }
+  return "?";
+}
+
+/// \copydoc toString(MddStatus)
+constexpr const char* toString(MddFaceType t) noexcept {
+  switch (t) {
+    case MddFaceType::None: return "None";
+    case MddFaceType::FV: return "FV";
+    case MddFaceType::VF: return "VF";
+    case MddFaceType::EE: return "EE";
+    case MddFaceType::Grazing: return "Grazing";
+  }
+  return "?";
+}
+
 /// Options of mdd() and intersects(). Defaults are in core/defaults.hpp.
 template <class T>
 struct MddOptions {
