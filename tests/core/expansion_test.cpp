@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -96,6 +97,53 @@ TEST(Expansion, ExactValueMatchesRationalArithmetic) {
   const Expansion zero = Expansion(0.1) * 0.3 - Expansion(0.3) * 0.1;
   EXPECT_EQ(zero.exactValue<Q>(), Q(0));
   EXPECT_EQ(Expansion(0.25).exactValue<Q>(), Q(0.25));
+}
+
+// Expansions longer than the inline buffer (kExpansionInline components) move to the
+// heap and stay exact: sums of numbers 2^54 apart in exponent keep one component each, so
+// products of such sums have many (within the exponent range: no overflow or underflow);
+// copies, moves and swaps of long and short expansions keep their values.
+TEST(Expansion, LongExpansionsLeaveTheInlineBufferAndStayExact) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> mant(1.0, 2.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    Expansion a(0.0), b(0.0);
+    Q qa(0), qb(0);
+    for (int k = 0; k < 16; ++k) {
+      const double x = std::ldexp(mant(rng), 54 * k - 432), y = std::ldexp(mant(rng), 54 * k - 430);
+      a = a + x;
+      b = b - y;
+      qa = qa + x;
+      qb = qb - y;
+    }
+    ASSERT_EQ(a.exactValue<Q>(), qa);
+    const Expansion p = a * b, sq = p * (Expansion(0.1) + 0.3);  // hundreds of components
+    const Q qp = qa * qb, qsq = qp * (Q(0.1) + Q(0.3));
+    ASSERT_EQ(p.exactValue<Q>(), qp) << trial;
+    ASSERT_EQ(sq.exactValue<Q>(), qsq) << trial;
+    Expansion c = sq;           // copy of a long one
+    Expansion d = std::move(c);  // move of a long one
+    Expansion e(0.5);
+    e = d;                       // a short one assigned a long one
+    d = Expansion(0.25);         // a long one assigned a short one
+    EXPECT_EQ(e.exactValue<Q>(), qsq);
+    EXPECT_EQ(d.exactValue<Q>(), Q(0.25));
+    EXPECT_EQ((e - sq).sign(), 0);
+    EXPECT_EQ((a + 0.0).exactValue<Q>(), qa);
+  }
+  mink::detail::SmallBuffer<double, 4> s, t;
+  for (int i = 0; i < 10; ++i) s.push_back(i);
+  t.push_back(-1);
+  s.swap(t);
+  ASSERT_EQ(s.size(), 1u);
+  ASSERT_EQ(t.size(), 10u);
+  EXPECT_EQ(s[0], -1.0);
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(t[static_cast<std::size_t>(i)], double(i));
+  t.resize(3);
+  EXPECT_EQ(t.size(), 3u);
+  EXPECT_EQ(t.back(), 2.0);
+  t.clear();
+  EXPECT_TRUE(t.empty());
 }
 
 }  // namespace

@@ -10,16 +10,104 @@
 // DCG 18, 1997: Fast-Expansion-Sum, Scale-Expansion), whose largest component
 // carries its sign. Exact while no product underflows or overflows: for the degrees used
 // in mink (up to 9) that is inputs between about 2^-100 and 2^100 in magnitude (or 0).
-// The expansion stage allocates; it runs only on inputs the filter cannot decide.
+// An expansion keeps up to kExpansionInline components in the object itself (on the
+// stack for a local) and moves to the heap only beyond: the products of degree up to 9
+// that mink evaluates rarely need more, so the expansion stage does not allocate either.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace mink {
 namespace detail {
+
+/// Components held inline by an expansion before it moves them to the heap.
+inline constexpr std::size_t kExpansionInline = 64;
+
+/// A vector of F with room for N elements in the object itself; beyond N the elements
+/// move to a heap buffer, which is then kept (clear() keeps the capacity). Only what the
+/// expansions below use: no constructors or destructors of elements (F is a float type).
+template <class F, std::size_t N>
+class SmallBuffer {
+ public:
+  SmallBuffer() = default;
+  SmallBuffer(const SmallBuffer& o) { assign(o); }
+  SmallBuffer(SmallBuffer&& o) noexcept { take(o); }
+  SmallBuffer& operator=(const SmallBuffer& o) {
+    if (this != &o) assign(o);
+    return *this;
+  }
+  SmallBuffer& operator=(SmallBuffer&& o) noexcept {
+    if (this != &o) take(o);
+    return *this;
+  }
+
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  F* begin() { return data(); }
+  F* end() { return data() + size_; }
+  const F* begin() const { return data(); }
+  const F* end() const { return data() + size_; }
+  F& operator[](std::size_t i) { return data()[i]; }
+  const F& operator[](std::size_t i) const { return data()[i]; }
+  const F& back() const { return data()[size_ - 1]; }
+
+  void clear() { size_ = 0; }
+  void reserve(std::size_t n) {
+    if (n > capacity()) grow(n);
+  }
+  void push_back(F x) {
+    if (size_ == capacity()) grow(size_ + 1);
+    data()[size_++] = x;
+  }
+  /// Shrinks to n elements, or grows with zeros.
+  void resize(std::size_t n) {
+    reserve(n);
+    for (std::size_t i = size_; i < n; ++i) data()[i] = F(0);
+    size_ = n;
+  }
+  void swap(SmallBuffer& o) noexcept {
+    SmallBuffer t(std::move(o));
+    o = std::move(*this);
+    *this = std::move(t);
+  }
+
+ private:
+  F* data() { return heap_.empty() ? inline_ : heap_.data(); }
+  const F* data() const { return heap_.empty() ? inline_ : heap_.data(); }
+  std::size_t capacity() const { return heap_.empty() ? N : heap_.size(); }
+  void grow(std::size_t n) {
+    std::vector<F> h(std::max(n, 2 * capacity()));
+    std::copy(begin(), end(), h.begin());
+    heap_.swap(h);
+  }
+  void assign(const SmallBuffer& o) {
+    size_ = 0;
+    reserve(o.size_);
+    std::copy(o.begin(), o.end(), data());
+    size_ = o.size_;
+  }
+  void take(SmallBuffer& o) {
+    if (o.heap_.empty()) {
+      size_ = 0;
+      reserve(o.size_);
+      std::copy(o.begin(), o.end(), data());
+    } else {
+      heap_ = std::move(o.heap_);
+      o.heap_.clear();
+    }
+    size_ = o.size_;
+    o.size_ = 0;
+  }
+
+  F inline_[N];
+  std::vector<F> heap_;  // empty: the elements are inline_
+  std::size_t size_ = 0;
+};
 
 /// A closed interval [lo, hi] of F (double or long double) enclosing a real value;
 /// arithmetic rounds outward.
@@ -96,6 +184,7 @@ using Interval = IntervalOf<double>;
 template <class F>
 class ExpansionOf {
   using Expansion = ExpansionOf;
+  using Components = SmallBuffer<F, kExpansionInline>;
 
  public:
   ExpansionOf() = default;
@@ -115,7 +204,7 @@ class ExpansionOf {
   /// two or three), so that only a few additions run in Q.
   template <class Q>
   Q exactValue() const {
-    const std::vector<F> h = compressed();
+    const Components h = compressed();
     Q value(0);
     for (F x : h) value += Q(x);
     return value;
@@ -134,7 +223,7 @@ class ExpansionOf {
   friend Expansion operator-(const Expansion& a, const Expansion& b) { return a + (-b); }
   friend Expansion operator*(const Expansion& a, const Expansion& b) {
     Expansion r, s;
-    std::vector<F> t;
+    Components t;
     for (F x : b.c_) {
       a.scaled(x, s);
       sum(r.c_, s.c_, t);
@@ -163,7 +252,7 @@ class ExpansionOf {
   // by magnitude, then one pass; linear, where growing e by each term of f is quadratic).
   // Valid for the strongly non-overlapping expansions every operation here keeps (IEEE
   // round-to-nearest-even).
-  static void sum(const std::vector<F>& e, const std::vector<F>& f, std::vector<F>& h) {
+  static void sum(const Components& e, const Components& f, Components& h) {
     h.clear();
     if (e.empty() || f.empty()) {
       h = e.empty() ? f : e;
@@ -189,8 +278,8 @@ class ExpansionOf {
   // The same value with non-adjacent components: a pass from the largest down folds each
   // component into a running sum, keeping what that sum cannot hold; a pass back up
   // renormalises what was kept.
-  std::vector<F> compressed() const {
-    std::vector<F> g(c_);
+  Components compressed() const {
+    Components g(c_);
     if (g.size() < 2) return g;
     std::size_t bottom = g.size() - 1;
     F big = g[bottom], sum1, low;
@@ -230,7 +319,7 @@ class ExpansionOf {
     }
     if (q != F(0)) r.c_.push_back(q);
   }
-  std::vector<F> c_;
+  Components c_;
 };
 using Expansion = ExpansionOf<double>;
 
