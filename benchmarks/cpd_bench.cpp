@@ -36,8 +36,10 @@
 //   sphere_tree  LocalSumMethod::SphereTree (Theorem 2 culling, from scratch each frame);
 //   convex_maps  LocalSumMethod::ConvexMaps, one object along the motion (coherent: each
 //                feature walked from its cell of the last frame); its first call, which
-//                also builds the two convex maps, is reported apart (convex_maps_first).
-// Agreement: on every frame brute, sphere_tree and convex_maps must give the same facet
+//                also builds the two convex maps, is reported apart (convex_maps_first);
+//   box_trees    LocalSumMethod::BoxTrees (the default), one object along the motion: the
+//                triangle pairs near the ball from the overlap test's two box trees.
+// Agreement: on every frame brute, sphere_tree, convex_maps and box_trees must give the same facet
 // count, triangle count and patch area (relative 1e-9); a WARNING line says otherwise.
 // On the degenerate scenes mink's whole boundary is also compared with CGAL's area.
 // Timing: thread CPU time (CLOCK_THREAD_CPUTIME_ID; the machine is shared), wall time in
@@ -52,7 +54,7 @@
 //   --full-timeout    wall-time limit of the whole boundary's child, per scene (default 30)
 //   --cgal-timeout    the same for CGAL (default 30)
 //   --method-timeout  the same for brute and for sphere_tree (default 20 each)
-//   --coherent-timeout  the same for convex_maps (default 40: it needs two frames or more)
+//   --coherent-timeout  the same for convex_maps and for box_trees (default 40 each)
 //   --only            run one scene (its name as printed, e.g. torus/torus)
 //   --verbose         every local update's time and sizes on stderr
 //   --quick           8 frames, 2 samples of the whole boundary, 10 s limits, CGAL only on
@@ -257,7 +259,7 @@ int main(int argc, char** argv) {
   std::printf("M's enclosing sphere radius %.0f at frame 0, ball radius %.0f, %d frames per scene; thread CPU time%s\n",
               kMRadius, kBall, frames, quick ? " (--quick: not for publication)" : "");
   std::printf("time limits (wall, child processes, per scene): whole boundary %.0f s, CGAL %.0f s, brute and "
-              "sphere_tree %.0f s each, convex_maps %.0f s\n\n",
+              "sphere_tree %.0f s each, convex_maps and box_trees %.0f s each\n\n",
               fullTimeout, cgalTimeout, methodTimeout, coherentTimeout);
 
   std::vector<Row> rows;
@@ -319,18 +321,20 @@ int main(int argc, char** argv) {
       if (r.frame == 0) fullArea0 = r.area;
     }
 
-    // The three local methods, each one object along the motion, each in its own child.
-    const mink::LocalSumMethod methods[3] = {mink::LocalSumMethod::BruteForce, mink::LocalSumMethod::SphereTree,
-                                             mink::LocalSumMethod::ConvexMaps};
-    const char* names[3] = {"brute", "sphere_tree", "convex_maps"};
-    Stats st[3], cmFirst;
-    std::array<double, 3> none{NAN, NAN, NAN};
-    std::vector<std::array<double, 3>> tri(frames, none), area(frames, none), fac(frames, none);
-    int ran[3] = {0, 0, 0};
-    bool methodDone[3] = {false, false, false};
-    double methodChildCpu[3] = {0, 0, 0};
-    for (int m = 0; m < 3; ++m) {
-      const double limit = m == 2 ? coherentTimeout : methodTimeout;
+    // The four local methods, each one object along the motion, each in its own child.
+    constexpr int kMethods = 4;
+    const mink::LocalSumMethod methods[kMethods] = {mink::LocalSumMethod::BruteForce, mink::LocalSumMethod::SphereTree,
+                                                    mink::LocalSumMethod::ConvexMaps, mink::LocalSumMethod::BoxTrees};
+    const char* names[kMethods] = {"brute", "sphere_tree", "convex_maps", "box_trees"};
+    auto limitOf = [&](int m) { return m >= 2 ? coherentTimeout : methodTimeout; };
+    Stats st[kMethods], cmFirst;
+    std::array<double, kMethods> none{NAN, NAN, NAN, NAN};
+    std::vector<std::array<double, kMethods>> tri(frames, none), area(frames, none), fac(frames, none);
+    int ran[kMethods] = {0, 0, 0, 0};
+    bool methodDone[kMethods] = {false, false, false, false};
+    double methodChildCpu[kMethods] = {0, 0, 0, 0};
+    for (int m = 0; m < kMethods; ++m) {
+      const double limit = limitOf(m);
       const std::vector<Record> recs = mink_bench::inChild<Record>(
           limit,
           [&](const std::function<void(const Record&)>& emit) {
@@ -357,7 +361,7 @@ int main(int argc, char** argv) {
       }
     }
     for (int f = 0; f < frames; ++f)
-      for (int m = 1; m < 3; ++m) {
+      for (int m = 1; m < kMethods; ++m) {
         if (std::isnan(tri[f][0]) || std::isnan(tri[f][m])) continue;
         const double scale = std::max({area[f][0], area[f][m], kBall * kBall});
         if (tri[f][m] != tri[f][0] || fac[f][m] != fac[f][0] || std::abs(area[f][m] - area[f][0]) > 1e-9 * scale) {
@@ -434,15 +438,16 @@ int main(int argc, char** argv) {
       rows.push_back({sc.name, "cgal", sc.degenerate, A.numTriangles(), B.numTriangles(), 0, k, mr, NAN, NAN, NAN, NAN,
                       NAN, NAN, NAN, NAN, NAN, NAN, NAN, cgalNote});
     }
-    for (int m = 0; m < 3; ++m)
-      print(names[m], st[m], sc.paper[m + 1],
-            stopped(methodDone[m], m == 2 ? coherentTimeout : methodTimeout, ran[m] == 0, methodChildCpu[m]));
+    for (int m = 0; m < kMethods; ++m)
+      print(names[m], st[m], m < 3 ? sc.paper[m + 1] : NAN,
+            stopped(methodDone[m], limitOf(m), ran[m] == 0, methodChildCpu[m]));
     print("convex_maps_first", cmFirst, NAN, "");
     const double fullMs = full.cpu.empty() ? fullChildCpu : med(full.cpu);
     const char* ge = full.cpu.empty() ? ">" : "";
-    std::printf("   full / convex_maps = %s%.1fx (paper %.1fx); full / brute %s%.1fx; full / sphere_tree %s%.1fx\n", ge,
-                fullMs / med(st[2].cpu), sc.paper[0] / sc.paper[3], ge, fullMs / med(st[0].cpu), ge,
-                fullMs / med(st[1].cpu));
+    std::printf("   full / convex_maps = %s%.1fx (paper %.1fx); full / box_trees %s%.1fx; full / brute %s%.1fx; "
+                "full / sphere_tree %s%.1fx\n",
+                ge, fullMs / med(st[2].cpu), sc.paper[0] / sc.paper[3], ge, fullMs / med(st[3].cpu), ge,
+                fullMs / med(st[0].cpu), ge, fullMs / med(st[1].cpu));
     std::printf("   (scene took %.0f s of wall time)\n\n", (wallMs() - sceneStart) * 1e-3);
   }
 

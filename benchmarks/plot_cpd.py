@@ -40,8 +40,9 @@ for r in rows:
     if r["scene"] not in scenes:
         scenes.append(r["scene"])
 methods = [("full", "full (mink)"), ("cgal", "CGAL minkowski_sum_3"), ("brute", "brute force"),
-           ("sphere_tree", "sphere tree (BSH)"), ("convex_maps", "convex maps (coherent)")]
-colours = ["#444444", "#999999", "#d62728", "#1f77b4", "#2ca02c"]
+           ("sphere_tree", "sphere tree (BSH)"), ("convex_maps", "convex maps (coherent)"),
+           ("box_trees", "box trees (default)")]
+colours = ["#444444", "#999999", "#d62728", "#1f77b4", "#2ca02c", "#9467bd"]
 by = {(r["scene"], r["method"]): r for r in rows}
 
 fig, ax = plt.subplots(figsize=(max(8, 1.6 * len(scenes)), 5))

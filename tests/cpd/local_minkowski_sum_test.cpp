@@ -3,8 +3,8 @@
 // minkowski_sum_3 in minkowski_boundary_test.cpp) and against its own methods:
 //   - the patch is the part of ∂M in the ball: every triangle on the whole boundary, every
 //     point of the whole boundary inside the ball covered, every triangle meeting the ball;
-//   - culling never drops a facet that meets the query box: the sphere-tree and
-//     convex-map enumerations give exactly the brute-force set;
+//   - culling never drops a facet that meets the query box: the sphere-tree, convex-map
+//     and box-tree enumerations give exactly the brute-force set;
 //   - coherence: one object updated along a sampled motion (each feature walked from its
 //     cell of the last call) gives, frame by frame, exactly the facets and triangles of an
 //     object built afresh for that frame;
@@ -148,18 +148,23 @@ TEST(LocalMinkowskiSum, CullingDropsNoFacetThatMeetsTheRegion) {
     mink::Pose<double> poseA, poseB;
     poseB.rotation = rotation(1.3, V(0.3, -1, 2));
     poseB.translation = V(0.1, 0.3, -0.2);
-    mink::LocalMinkowskiSumOptions<double> brute, tree, maps;
+    mink::LocalMinkowskiSumOptions<double> brute, tree, maps, boxes;
     brute.method = mink::LocalSumMethod::BruteForce;
     tree.method = mink::LocalSumMethod::SphereTree;
     maps.method = mink::LocalSumMethod::ConvexMaps;
-    mink::LocalMinkowskiSum<double> lb(A, B, brute), lt(A, B, tree), lm(A, B, maps);
+    boxes.method = mink::LocalSumMethod::BoxTrees;
+    mink::LocalMinkowskiSum<double> lb(A, B, brute), lt(A, B, tree), lm(A, B, maps), lx(A, B, boxes);
     for (const V& c : {V(0, 0, 0), V(0.5, -0.3, 0.8), V(-1, 0.5, 0.2)}) {
       lb.update(poseA, poseB, c, 0.8);
       lt.update(poseA, poseB, c, 0.8);
       lm.update(poseA, poseB, c, 0.8);
+      lx.update(poseA, poseB, c, 0.8);
       EXPECT_EQ(facetSet(lt.facets()), facetSet(lb.facets())) << "sphere tree";
       EXPECT_EQ(facetSet(lm.facets()), facetSet(lb.facets())) << "convex maps";
+      EXPECT_EQ(facetSet(lx.facets()), facetSet(lb.facets())) << "box trees";
+      EXPECT_EQ(triangleSet(lx.patch()), triangleSet(lb.patch())) << "box trees";
       EXPECT_GT(lb.patch().candidatePairs, lm.patch().candidatePairs);
+      EXPECT_GT(lb.patch().candidatePairs, lx.patch().candidatePairs);
     }
   }
 }
@@ -168,7 +173,11 @@ TEST(LocalMinkowskiSum, CoherentUpdatesEqualUpdatesFromScratch) {
   for (const Pair& pr : pairs()) {
     SCOPED_TRACE(pr.name);
     const Mesh A = mesh(pr.a), B = mesh(pr.b);
-    mink::LocalMinkowskiSum<double> coherent(A, B);
+    mink::LocalMinkowskiSumOptions<double> maps;
+    maps.method = mink::LocalSumMethod::ConvexMaps;
+    // The default (BoxTrees) keeps B's placement and box tree between calls; ConvexMaps
+    // keeps every feature's cell.
+    mink::LocalMinkowskiSum<double> coherent(A, B), coherentMaps(A, B, maps);
     for (int f = 0; f < kFrames; ++f) {
       // B turns 3 degrees per frame about a tilted axis and slides; the ball follows.
       mink::Pose<double> poseA, poseB;
@@ -180,6 +189,15 @@ TEST(LocalMinkowskiSum, CoherentUpdatesEqualUpdatesFromScratch) {
       const auto& Q = fresh.update(poseA, poseB, c, 0.9);
       EXPECT_EQ(facetSet(coherent.facets()), facetSet(fresh.facets())) << "frame " << f;
       EXPECT_EQ(triangleSet(P), triangleSet(Q)) << "frame " << f;
+      const auto& PM = coherentMaps.update(poseA, poseB, c, 0.9);
+      EXPECT_EQ(facetSet(coherentMaps.facets()), facetSet(fresh.facets())) << "convex maps, frame " << f;
+      EXPECT_EQ(triangleSet(PM), triangleSet(Q)) << "convex maps, frame " << f;
+      // A second ball at the same poses (as a CPD query's next iteration): B is not
+      // placed again, and the patch is the fresh object's for that ball.
+      const V c2 = c + V(0.2, -0.1, 0.05);
+      mink::LocalMinkowskiSum<double> fresh2(A, B);
+      EXPECT_EQ(triangleSet(coherent.update(poseA, poseB, c2, 0.5)), triangleSet(fresh2.update(poseA, poseB, c2, 0.5)))
+          << "second ball, frame " << f;
     }
   }
 }
@@ -195,7 +213,8 @@ TEST(LocalMinkowskiSum, ScalingByAPowerOfTwoScalesThePatch) {
   const M3 R = rotation(1.1, V(0.3, -1, 2));
   const V t(0.9, 0.3, -0.2), c(1.9, 0.2, 0.1);
   const double r = 0.8;
-  for (auto method : {mink::LocalSumMethod::BruteForce, mink::LocalSumMethod::SphereTree, mink::LocalSumMethod::ConvexMaps}) {
+  for (auto method : {mink::LocalSumMethod::BruteForce, mink::LocalSumMethod::SphereTree, mink::LocalSumMethod::ConvexMaps,
+                      mink::LocalSumMethod::BoxTrees}) {
     mink::LocalMinkowskiSumOptions<double> opt;
     opt.method = method;
     const Mesh A1 = mesh(a), B1 = mesh(b);
@@ -252,9 +271,9 @@ TEST(LocalMinkowskiSum, NearlyFlatEdgeTurnedReflexByTheRotation) {
   mink::Pose<double> pA, pB;
   pB.rotation << 0.96296296296296302, -0.25925925925925924, 0.07407407407407407, 0.25925925925925924,
       0.81481481481481488, -0.51851851851851849, 0.07407407407407407, 0.51851851851851849, 0.85185185185185186;
-  std::set<std::tuple<int, int, int>> sets[3];
-  std::set<std::vector<double>> tris[3];
-  for (int m = 0; m < 3; ++m) {
+  std::set<std::tuple<int, int, int>> sets[4];
+  std::set<std::vector<double>> tris[4];
+  for (int m = 0; m < 4; ++m) {
     mink::LocalMinkowskiSumOptions<double> opt;
     opt.method = static_cast<mink::LocalSumMethod>(m);
     mink::LocalMinkowskiSum<double> local(A, B, opt);
@@ -264,7 +283,9 @@ TEST(LocalMinkowskiSum, NearlyFlatEdgeTurnedReflexByTheRotation) {
   EXPECT_FALSE(sets[0].empty());
   EXPECT_EQ(sets[1], sets[0]) << "sphere tree";
   EXPECT_EQ(sets[2], sets[0]) << "convex maps";
+  EXPECT_EQ(sets[3], sets[0]) << "box trees";
   EXPECT_EQ(tris[2], tris[0]);
+  EXPECT_EQ(tris[3], tris[0]);
   EXPECT_EQ(sets[0].count({static_cast<int>(mink::ConvolutionType::EE), 15, 21}), 0u);  // the pair of the flipped edge
 }
 

@@ -43,12 +43,16 @@ enum class LocalSumMethod {
   BruteForce,  ///< every feature pair of A and B tested (the paper's "brute force" column)
   SphereTree,  ///< culling with the two bounding-sphere hierarchies, from scratch each call
   ConvexMaps,  ///< each feature's compatible partners located in the other's convex map,
-               ///< walked from where they were in the last call (the default)
+               ///< walked from where they were in the last call
+  BoxTrees,    ///< the triangle pairs whose boxes' difference meets the ball's box, from
+               ///< the two box trees of the overlap test, then their feature pairs: the
+               ///< work follows the part of the meshes near the ball, not their size (the
+               ///< default; exact T, which has no box trees: as SphereTree)
 };
 
 template <class T>
 struct LocalMinkowskiSumOptions {
-  LocalSumMethod method = LocalSumMethod::ConvexMaps;
+  LocalSumMethod method = LocalSumMethod::BoxTrees;
 };
 
 namespace detail {
@@ -172,8 +176,15 @@ class LocalMinkowskiSum {
         throw InvalidInput("LocalMinkowskiSum::update: the ball's centre or radius overflows in units of the "
                            "meshes' size (2^" + std::to_string(scaleExp_) + ")");
     }
-    frame_.place(R, t);
-    overlap_.setPlacement(R, t);
+    // Placing B (its vertices mapped, the overlap test's box tree of B rebuilt) only when
+    // the relative pose moved: a query's successive balls share one.
+    if (!placed_ || !(R == placedR_) || !(t == placedT_)) {
+      frame_.place(R, t);
+      overlap_.setPlacement(R, t);
+      placedR_ = R;
+      placedT_ = t;
+      placed_ = true;
+    }
     region_.bounded = true;
     for (int a = 0; a < 3; ++a) {
       region_.lo[a] = region_.centre[a] - region_.radius;
@@ -209,7 +220,13 @@ class LocalMinkowskiSum {
   void gather() {
     facets_.clear();
     seen_.clear();
-    if (options_.method == LocalSumMethod::ConvexMaps) {
+    if (options_.method == LocalSumMethod::BoxTrees) {
+      if constexpr (ScalarTraits<T>::isExact) {
+        cull();
+      } else {
+        viaBoxTrees();
+      }
+    } else if (options_.method == LocalSumMethod::ConvexMaps) {
       viaConvexMaps();
     } else if (options_.method == LocalSumMethod::BruteForce) {
       for (int f = 0; f < A_.numTriangles(); ++f)
@@ -265,6 +282,32 @@ class LocalMinkowskiSum {
         }
       });
     }
+  }
+
+  /// The triangle pairs (t_A, t_B) whose boxes' difference box(t_A) − box(t_B) meets the
+  /// region's box, i.e. box(t_A) meets box(t_B) moved by the ball's centre and grown by
+  /// its radius, then the feature pairs of each, once. Complete: a feature pair's facet
+  /// box lies in its triangles' difference box, so every facet meeting the region comes
+  /// from such a triangle pair. The pad covers the double boxes' and the facet corners'
+  /// rounding, generously (the exact box test in consider() decides).
+  void viaBoxTrees() {
+    const double u = std::max(detail::toDouble(ScalarTraits<T>::epsilon()), std::ldexp(1.0, -52));
+    double reach = overlap_.boxScale() + detail::toDouble(region_.radius);
+    for (int a = 0; a < 3; ++a) reach += std::abs(detail::toDouble(region_.centre[a]));
+    const double pad = detail::toDouble(region_.radius) + 16.0 * u * reach;
+    const long long visited =
+        overlap_.forNearTrianglePairs(region_.centre, pad, [&](int fa, int fb) { trianglePairFeatures(fa, fb); });
+    patch_.nodePairs = static_cast<int>(std::min<long long>(visited, std::numeric_limits<int>::max()));
+  }
+
+  /// The feature pairs of triangle fa of A and fb of B (FV, VF, EE), each pair once.
+  void trianglePairFeatures(int fa, int fb) {
+    const auto& ta = A_.triangle(fa);
+    const auto& tb = B_.triangle(fb);
+    for (int j = 0; j < 3; ++j) once({ConvolutionType::FV, fa, tb[j], 0});
+    for (int i = 0; i < 3; ++i) once({ConvolutionType::VF, ta[i], fb, 0});
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) once({ConvolutionType::EE, A_.triangleEdge(fa, i), B_.triangleEdge(fb, j), 0});
   }
 
   /// A candidate pair: kept if compatible and its facet's box meets the region box.
@@ -348,10 +391,7 @@ class LocalMinkowskiSum {
       for (int j = 0; j < 3; ++j) pts[3 * i + j] = frame_.m(ta[i], tb[j]);
     const Sphere<T> s = detail::enclosingSphere(pts, 9);
     if (!sphereMeetsRegion(s.centre, T(s.radius + slack))) return;
-    for (int j = 0; j < 3; ++j) once({ConvolutionType::FV, fa, tb[j], 0});
-    for (int i = 0; i < 3; ++i) once({ConvolutionType::VF, ta[i], fb, 0});
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) once({ConvolutionType::EE, A_.triangleEdge(fa, i), B_.triangleEdge(fb, j), 0});
+    trianglePairFeatures(fa, fb);
   }
 
   void once(const ConvolutionPair& c) {
@@ -375,6 +415,7 @@ class LocalMinkowskiSum {
     A_ = detail::scaledMesh(userA_, e);
     B_ = detail::scaledMesh(userB_, e);
     overlap_ = MeshOverlap<T>(A_, B_, Mat3<T>::Identity(), Vec3<T>::Zero());
+    placed_ = false;
     mapA_.reset();
     mapB_.reset();
     hintFA_.clear();
@@ -389,6 +430,10 @@ class LocalMinkowskiSum {
   LocalMinkowskiSumOptions<T> options_;
   ConvolutionFrame<T> frame_;
   MeshOverlap<T> overlap_;
+  // The relative pose frame_ and overlap_ were last placed at (in the working units).
+  bool placed_ = false;
+  Mat3<T> placedR_ = Mat3<T>::Identity();
+  Vec3<T> placedT_ = Vec3<T>::Zero();
   typename detail::Trimmer<T>::Region region_;
   detail::Trimmer<T> trimmer_;
   std::vector<ConvolutionPair> facets_;

@@ -31,7 +31,7 @@ struct MinkowskiPatch {
   int facetsGathered = 0;   ///< compatible convolution facets met by the query region
   int pieces = 0;           ///< convex pieces the facets were cut into (inside the region)
   int overlapTests = 0;     ///< collision tests made to classify pieces (on ∂M or inside M)
-  int nodePairs = 0;        ///< sphere-tree node pairs visited by the culling
+  int nodePairs = 0;        ///< tree node pairs visited by the culling (SphereTree, BoxTrees)
   int candidatePairs = 0;   ///< feature pairs tested for compatibility
   bool rebuilt = false;     ///< true when update() rebuilt from scratch (no kept state used)
 

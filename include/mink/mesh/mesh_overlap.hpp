@@ -183,6 +183,25 @@ class MeshOverlap {
   /// test of that query used.
   Vec3<T> placedVertexB(int v) const { return bPoints_[v] + y_; }
 
+  /// Floating-point T only (the box trees are in double): calls near(fa, fb) for every
+  /// triangle fa of A and fb of B (as placed) whose boxes come within `pad` of each other
+  /// on every axis once B's is moved by y. A search, not a decision: a caller that needs
+  /// every pair within some distance adds the rounding of the conversion to double and
+  /// of its own arithmetic to `pad` (boxScale() bounds the boxes' coordinates). Returns
+  /// the node pairs the traversal visited.
+  template <class Near>
+  long long forNearTrianglePairs(const Vec3<T>& y, double pad, Near&& near) const {
+    static_assert(!ScalarTraits<T>::isExact, "MeshOverlap::forNearTrianglePairs: floating-point T only");
+    aTree_.anyPair(bTree_, toD(y), pad, [&](int fa, int fb) {
+      near(fa, fb);
+      return false;
+    });
+    return aTree_.pairsVisited();
+  }
+
+  /// Floating-point T: the largest coordinate of the triangle boxes (A's, B's as placed).
+  double boxScale() const { return boxScale_; }
+
  private:
   // A view of B + y for point location (see detail::MeshInOwnFrame).
   struct PlacedB {
