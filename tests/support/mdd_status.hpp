@@ -1,5 +1,5 @@
 // tests/support/mdd_status.hpp — the exact reference's status (mdd_reference.hpp) as the
-// mink::MddStatus a query should report, and a status's name for messages.
+// mink::MddStatus a query should report (a status's name: mink::toString).
 #pragma once
 
 #include "mink/mdd/mdd_types.hpp"
@@ -20,4 +20,4 @@ inline mink::MddStatus toMinkStatus(MddRefStatus s) {
   }
 }
 
-inline }  // namespace mink_test
+}  // namespace mink_test
