@@ -2,8 +2,9 @@
 # Builds mink and runs its whole test suite twice, then its fuzzer:
 #   1. Release, everything (tests, benchmarks, examples) in build/, then ctest;
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer (-O1 -g1, assertions on), tests only
-#      but for the two comparisons with CGAL's exact constructions (tests/CMakeLists.txt),
-#      in build-asan/, then ctest without the package test;
+#      but for the two comparisons with CGAL's exact constructions, the self-tests of the
+#      test references and the extern-templates build check (tests/CMakeLists.txt), in
+#      build-asan/, then ctest without the package test;
 #   3. the libFuzzer targets (fuzz/run_fuzz.sh: clang; mink_mdd_fuzz and mink_mesh_fuzz
 #      each replay their seeds and regressions, then fuzz a fixed sequence: MINK_FUZZ_SEED=1,
 #      MINK_FUZZ_RUNS=10000 per target, at most MINK_FUZZ_SECONDS=60 in all) in build-fuzz/.
