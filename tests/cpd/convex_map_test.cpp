@@ -162,16 +162,24 @@ TEST(ConvexMap, PreparedMeshesGiveTheSameLocalSum) {
   const Mesh Bu = Mesh::fromMesh(b.verticesAs<double>(), b.triangles);
   mink::prepare(A);
   mink::prepare(B);
-  mink::LocalMinkowskiSum<double> prepared(A, B), unprepared(Au, Bu);
   mink::Pose<double> poseA, poseB;
   poseB.translation = V(0.4, -0.2, 0.3);
   const V centre(0.2, 0.1, -0.1);
+  // The default method (BoxTrees) needs no convex map and builds none.
+  mink::LocalMinkowskiSum<double> boxes(Au, Bu);
+  const auto pb = boxes.update(poseA, poseB, centre, 0.8);
+  EXPECT_FALSE(mink::isPrepared(Au) || mink::isPrepared(Bu));
+  // ConvexMaps uses the prepared maps, or builds them in its first update.
+  mink::LocalMinkowskiSumOptions<double> maps;
+  maps.method = mink::LocalSumMethod::ConvexMaps;
+  mink::LocalMinkowskiSum<double> prepared(A, B, maps), unprepared(Au, Bu, maps);
   const auto& pu = unprepared.update(poseA, poseB, centre, 0.8);
-  EXPECT_TRUE(mink::isPrepared(Au) && mink::isPrepared(Bu));  // the query built them
+  EXPECT_TRUE(mink::isPrepared(Au) && mink::isPrepared(Bu));  // the update built them
   const auto& pp = prepared.update(poseA, poseB, centre, 0.8);
   ASSERT_FALSE(pp.triangles.empty());
   EXPECT_EQ(pp.vertices, pu.vertices);
   EXPECT_EQ(pp.triangles, pu.triangles);
+  EXPECT_EQ(pb.triangles.size(), pu.triangles.size());
 }
 
 }  // namespace
