@@ -322,9 +322,10 @@ class ConvexMap {
   std::vector<V3> poly_, clipped_, dirs_, rays_;
 };
 
-/// Builds X's convex map up front: the one structure of a mesh that a CPD query
-/// (LocalMinkowskiSum::update with LocalSumMethod::ConvexMaps, the default, and the CPD
-/// query through it) would otherwise build inside its first call. Shared by every copy of
+/// Builds X's convex map up front: the one structure of a mesh that
+/// LocalMinkowskiSum::update with LocalSumMethod::ConvexMaps (and a CPD query set to that
+/// method) would otherwise build inside its first call; the default, BoxTrees, needs no
+/// convex map. Shared by every copy of
 /// X; thread-safe and idempotent. The mesh counterpart of prepare(ConvexPolyhedron)
 /// (hierarchy/prepare.hpp). Returns the map.
 template <class T>
