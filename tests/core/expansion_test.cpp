@@ -68,6 +68,48 @@ TEST(Interval, EnclosesEveryOperationOverTheRange) {
   EXPECT_GT(decided, 1000);  // the filter decides the generic signs
 }
 
+// The long double interval (the trimmer's second filter, core of cpd/detail/trim_corners.hpp
+// namedSign): on doubles of the range the trimmer meets, chained products and sums to degree
+// 9 enclose the exact value, and a sign it certifies is the exact sign. Its bounds are
+// turned into rationals exactly: a long double of this range is the sum of two doubles.
+Q exactLongDouble(long double x) {
+  const double hi = static_cast<double>(x), lo = static_cast<double>(x - static_cast<long double>(hi));
+  EXPECT_EQ(static_cast<long double>(hi) + static_cast<long double>(lo), x);
+  return Q(hi) + Q(lo);
+}
+
+TEST(Interval, LongDoubleEnclosesDegreeNinePolynomials) {
+  using IL = mink::detail::IntervalOf<long double>;
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int decided = 0, decidedOnlyByLongDouble = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<double> v(9);
+    for (double& x : v) x = std::ldexp(unit(rng), static_cast<int>(rng() % 60) - 30);
+    // Near cancellation, as at a corner close to a cut: v0 v1 v2 against itself plus a
+    // perturbation 2^-e smaller (e up to 80), times a degree-6 factor.
+    const double tiny = std::ldexp(v[8], -static_cast<int>(rng() % 80));
+    auto poly = [&](auto tag) {
+      using N = decltype(tag);
+      const N a(v[0]), b(v[1]), c(v[2]), d(v[3]), e(v[4]), f(v[5]), g(v[6]), h(v[7]);
+      const N cancel = a * b * c - N(v[0]) * N(v[1]) * N(v[2]) + N(tiny) * (a * a + N(1.0));
+      return cancel * (d * e * f - g * h * a) * (b + c) + N(tiny) * e;
+    };
+    const IL r = poly(IL());
+    const Q exact = poly(Q());
+    ASSERT_LE(exactLongDouble(r.lo()), exact) << trial;
+    ASSERT_GE(exactLongDouble(r.hi()), exact) << trial;
+    if (r.excludesZero()) {
+      ++decided;
+      ASSERT_EQ(r.certainSign(), CGAL::sign(exact)) << trial;
+      if (!poly(Interval()).excludesZero()) ++decidedOnlyByLongDouble;
+    }
+  }
+  EXPECT_GT(decided, 1000);
+  if (std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits)
+    EXPECT_GT(decidedOnlyByLongDouble, 50);  // where long double is wider, it decides more
+}
+
 // A tie is never decided: a value that is exactly 0 gives an interval holding 0.
 TEST(Interval, NeverDecidesAnExactZero) {
   const Interval x(0.1), y(0.3), z(0.7);

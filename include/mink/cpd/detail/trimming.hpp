@@ -416,8 +416,12 @@ class Trimmer {
   N cutValue(int F, std::uint64_t cut, const N X[3], const N& W) const;
   /// side() of a constructed corner by the interval filter: ±1, or 0 when it cannot tell.
   int filteredSide(int F, int id, std::uint64_t cut) const;
-  /// side() of a constructed corner in expansion arithmetic from its name (cached).
+  /// side() of a constructed corner from its name (cached): namedSign of cutValue.
   int exactSide(int F, int id, std::uint64_t cut) const;
+  /// The exact sign of value(X, W) · sign(W) for the corner named `key` (value: a
+  /// polynomial in X / W, called with long double intervals, then with expansions).
+  template <class Value>
+  int namedSign(const TrimKey& key, const Value& value) const;
   /// Exact sign of (x − p) · (q − p) for corner id and points p, q (ids of a_i − b_j).
   int dotSign(int id, int p, int q) const;
 
