@@ -346,8 +346,8 @@ int Trimmer<T>::namedSign(const TrimKey& key, const Value& value) const {
   // Where long double is wider than FloatOf (x87: 11 more bits), a second filter: the
   // corner recomputed from its name in long double intervals. The corners that reach here
   // mostly sit at a vertex of M within the double filter's width of the cut but not on it
-  // (an edge-edge facet's fourth point is off its plane by a rounding): on duck/torus this
-  // stage settled about 70% of such tests, each at a fraction of the expansions' cost.
+  // (an edge-edge facet's fourth point is off its plane by a rounding); this stage settles
+  // most of them at a fraction of the expansions' cost (README, "The long double stage").
   if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<FloatOf>::digits) {
     IVL X[3], W;
     homogeneous<IVL>(key, X, W);
