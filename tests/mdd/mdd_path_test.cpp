@@ -3,9 +3,11 @@
 // and their generic twins (tests/support/degenerate_contacts.hpp): usedFallback iff the
 // exhaustive scan or the chord answered, a Grazing face iff the grazing step did, fromCache
 // iff the cache did, None only without an answer; a repeated query with a cache is answered
-// by it, a caller's visit cap of 0 by nothing.
+// by it, a caller's visit cap of 0 by nothing. MddResult::featureOfP / featureOfQ: with Q
+// moved by parameter * s, the typed features meet (a vertex on a face's plane, two edges).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "mink/mink.hpp"
@@ -28,28 +30,114 @@ Pair build(const mink_test::ContactScene& sc) {
   return p;
 }
 
-TEST(MddPath, AgreesWithFallbackGrazingAndCacheFlags) {
-  int searched = 0;
+// mdd() on every direction of the degenerate contacts at n = 12 and their generic twins:
+// check(pair, direction, result, label).
+template <class Check>
+void forEveryContact(Check&& check) {
   for (const std::string& family : mink_test::degenerateFamilies()) {
     for (bool generic : {false, true}) {
       const mink_test::ContactScene sc = mink_test::degenerateScene(family, 12, generic);
       const Pair p = build(sc);
       for (std::size_t d = 0; d < sc.dirs.size(); ++d) {
         const std::string label = family + (generic ? " generic" : " degenerate") + " direction " + std::to_string(d);
-        const auto r = mink::mdd(p.P, p.poseP, p.Q, p.poseQ, sc.dirs[d]);
-        const bool fallback = r.path == MddPath::Exhaustive || r.path == MddPath::Chord;
-        EXPECT_EQ(r.usedFallback, fallback) << label;
-        EXPECT_EQ(r.faceType == mink::MddFaceType::Grazing, r.path == MddPath::Grazing) << label;
-        EXPECT_FALSE(r.fromCache) << label;
-        EXPECT_NE(r.path, MddPath::Cache) << label;
-        if (r.status != MddStatus::NoContact && r.status != MddStatus::IterationLimit) {
-          EXPECT_NE(r.path, MddPath::None) << label;
-        }
-        searched += r.path == MddPath::Search || r.path == MddPath::Certificate;
+        check(p, sc.dirs[d], mink::mdd(p.P, p.poseP, p.Q, p.poseQ, sc.dirs[d]), label);
       }
     }
   }
+}
+
+TEST(MddPath, AgreesWithFallbackGrazingAndCacheFlags) {
+  int searched = 0;
+  forEveryContact([&](const Pair&, const Eigen::Vector3d&, const mink::MddResult<double>& r, const std::string& label) {
+    const bool fallback = r.path == MddPath::Exhaustive || r.path == MddPath::Chord;
+    EXPECT_EQ(r.usedFallback, fallback) << label;
+    EXPECT_EQ(r.faceType == mink::MddFaceType::Grazing, r.path == MddPath::Grazing) << label;
+    EXPECT_FALSE(r.fromCache) << label;
+    EXPECT_NE(r.path, MddPath::Cache) << label;
+    if (r.status != MddStatus::NoContact && r.status != MddStatus::IterationLimit) {
+      EXPECT_NE(r.path, MddPath::None) << label;
+    }
+    searched += r.path == MddPath::Search || r.path == MddPath::Certificate;
+  });
   EXPECT_GT(searched, 0);
+}
+
+// How far P's feature fp (at poseP) and Q's feature fq (at poseQ moved by `move`) are from
+// touching, world frame: a vertex from the other's face plane (FV, VF), or the distance
+// between the two edges' lines (EE; 0 when parallel).
+double featureGap(const mink::ConvexPolyhedron<double>& P, const mink::Pose<double>& poseP, mink::Feature fp,
+                  const mink::ConvexPolyhedron<double>& Q, const mink::Pose<double>& poseQ, mink::Feature fq,
+                  const Eigen::Vector3d& move) {
+  using K = mink::FeatureKind;
+  auto valid = [](const mink::ConvexPolyhedron<double>& S, mink::Feature f) {
+    const int n = f.kind == K::Vertex ? S.numVertices() : f.kind == K::Edge ? S.numEdges() : S.numFaces();
+    return f.kind != K::None && f.index >= 0 && f.index < n;
+  };
+  if (!valid(P, fp) || !valid(Q, fq)) return 1e300;
+  auto inP = [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return poseP.rotation * x + poseP.translation; };
+  auto inQ = [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return poseQ.rotation * x + poseQ.translation + move; };
+  auto vertexToFace = [](const Eigen::Vector3d& v, const Eigen::Vector3d& n, const Eigen::Vector3d& onFace) {
+    return std::abs(n.dot(v - onFace));
+  };
+  if (fp.kind == K::Face && fq.kind == K::Vertex)
+    return vertexToFace(inQ(Q.vertex(fq.index)), poseP.rotation * P.faceNormal(fp.index),
+                        inP(P.vertex(P.faceVertices(fp.index)[0])));
+  if (fp.kind == K::Vertex && fq.kind == K::Face)
+    return vertexToFace(inP(P.vertex(fp.index)), poseQ.rotation * Q.faceNormal(fq.index),
+                        inQ(Q.vertex(Q.faceVertices(fq.index)[0])));
+  if (fp.kind == K::Edge && fq.kind == K::Edge) {
+    const auto [a0, a1] = P.edgeVertices(fp.index);
+    const auto [b0, b1] = Q.edgeVertices(fq.index);
+    const Eigen::Vector3d pa = inP(P.vertex(a0)), da = inP(P.vertex(a1)) - pa;
+    const Eigen::Vector3d qb = inQ(Q.vertex(b0)), db = inQ(Q.vertex(b1)) - qb;
+    const Eigen::Vector3d c = da.cross(db);
+    if (c.norm() <= 1e-12 * da.norm() * db.norm()) return 0.0;
+    return std::abs((qb - pa).dot(c)) / c.norm();
+  }
+  return 1e300;
+}
+
+// The witnesses' distance to the face of P or vertex / edge they must lie on.
+double witnessOnP(const mink::ConvexPolyhedron<double>& P, mink::Feature f, const Eigen::Vector3d& x) {
+  if (f.kind == mink::FeatureKind::Face) return std::abs(P.faceNormal(f.index).dot(x) - P.faceOffset(f.index));
+  return 0.0;  // (a vertex or edge of P: the gap above decides)
+}
+
+TEST(MddPath, TypedFeaturesMeetWhenQIsMoved) {
+  int checked[3] = {0, 0, 0};
+  forEveryContact([&](const Pair& p, const Eigen::Vector3d& s, const mink::MddResult<double>& r, const std::string& label) {
+    const mink::Feature fp = r.featureOfP(), fq = r.featureOfQ();
+    EXPECT_EQ(fp.index, r.featureP) << label;
+    EXPECT_EQ(fq.index, r.featureQ) << label;
+    using K = mink::FeatureKind;
+    switch (r.faceType) {
+      case mink::MddFaceType::FV:
+        EXPECT_EQ(fp.kind, K::Face) << label;
+        EXPECT_EQ(fq.kind, K::Vertex) << label;
+        ++checked[0];
+        break;
+      case mink::MddFaceType::VF:
+        EXPECT_EQ(fp.kind, K::Vertex) << label;
+        EXPECT_EQ(fq.kind, K::Face) << label;
+        ++checked[1];
+        break;
+      case mink::MddFaceType::EE:
+        EXPECT_EQ(fp.kind, K::Edge) << label;
+        EXPECT_EQ(fq.kind, K::Edge) << label;
+        ++checked[2];
+        break;
+      default:
+        EXPECT_EQ(fp.kind, r.featureP >= 0 ? K::Vertex : K::None) << label;
+        return;
+    }
+    // Q moved by parameter * s touches P: the named features meet (a vertex on the
+    // other's face plane, two edge lines crossing), and an FV witness lies on P's face.
+    const double scale = 1.0 + r.witnessP.cwiseAbs().maxCoeff() + std::abs(r.translation);
+    EXPECT_LT(featureGap(p.P, p.poseP, fp, p.Q, p.poseQ, fq, r.parameter * s), 1e-9 * scale)
+        << label << " " << mink::toString(r.faceType);
+    EXPECT_LT(witnessOnP(p.P, fp, r.witnessP), 1e-9 * scale) << label;  // poseP is the identity
+  });
+  EXPECT_GT(checked[0] + checked[1] + checked[2], 50) << checked[0] << " " << checked[1] << " " << checked[2];
 }
 
 TEST(MddPath, RepeatedQueryIsAnsweredByTheCache) {

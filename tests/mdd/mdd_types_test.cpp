@@ -34,6 +34,29 @@ TEST(MddTypes, EveryEnumeratorHasItsOwnName) {
   EXPECT_EQ(names, (std::set<std::string>{"None", "FV", "VF", "EE", "Grazing"}));
 }
 
+TEST(MddTypes, TypedFeaturesFollowTheFaceType) {
+  using mink::FeatureKind;
+  mink::MddResult<double> r;
+  EXPECT_EQ(r.featureOfP(), mink::Feature{});  // nothing found: kind None, index -1
+  EXPECT_EQ(r.featureOfQ().kind, FeatureKind::None);
+  r.featureP = 3;
+  r.featureQ = 5;
+  EXPECT_EQ(r.featureOfP(), (mink::Feature{FeatureKind::Vertex, 3}));  // NoContact's separating normal
+  r.faceType = mink::MddFaceType::FV;
+  EXPECT_EQ(r.featureOfP(), (mink::Feature{FeatureKind::Face, 3}));
+  EXPECT_EQ(r.featureOfQ(), (mink::Feature{FeatureKind::Vertex, 5}));
+  r.faceType = mink::MddFaceType::VF;
+  EXPECT_EQ(r.featureOfP(), (mink::Feature{FeatureKind::Vertex, 3}));
+  EXPECT_EQ(r.featureOfQ(), (mink::Feature{FeatureKind::Face, 5}));
+  r.faceType = mink::MddFaceType::EE;
+  EXPECT_EQ(r.featureOfP(), (mink::Feature{FeatureKind::Edge, 3}));
+  EXPECT_NE(r.featureOfQ(), (mink::Feature{FeatureKind::Edge, 3}));
+  r.faceType = mink::MddFaceType::Grazing;
+  EXPECT_EQ(r.featureOfQ(), (mink::Feature{FeatureKind::Vertex, 5}));
+  EXPECT_STREQ(mink::toString(FeatureKind::Edge), "Edge");
+  EXPECT_STREQ(mink::toString(static_cast<FeatureKind>(9)), "?");
+}
+
 TEST(MddTypes, AValueOutsideTheEnumerationIsAQuestionMark) {
   EXPECT_STREQ(mink::toString(static_cast<mink::MddStatus>(99)), "?");
   EXPECT_STREQ(mink::toString(static_cast<mink::MddPath>(-1)), "?");

@@ -90,6 +90,50 @@ constexpr const char* toString(MddFaceType t) noexcept {
   return "?";
 }
 
+/// What a feature id of a polyhedron names (MddResult::featureOfP / featureOfQ).
+enum class FeatureKind {
+  None,    ///< no feature (index -1)
+  Vertex,  ///< index: a vertex of the shape (ConvexPolyhedron::vertex)
+  Edge,    ///< index: an edge of the shape (ConvexPolyhedron::edgeVertices)
+  Face     ///< index: a face of the shape (ConvexPolyhedron::faceVertices)
+};
+
+/// A feature of P or Q: its kind and its index among the shape's features of that kind.
+struct Feature {
+  FeatureKind kind = FeatureKind::None;
+  int index = -1;
+  friend constexpr bool operator==(const Feature& a, const Feature& b) noexcept {
+    return a.kind == b.kind && a.index == b.index;
+  }
+  friend constexpr bool operator!=(const Feature& a, const Feature& b) noexcept { return !(a == b); }
+};
+
+constexpr const char* toString(FeatureKind k) noexcept {
+  switch (k) {
+    case FeatureKind::None: return "None";
+    case FeatureKind::Vertex: return "Vertex";
+    case FeatureKind::Edge: return "Edge";
+    case FeatureKind::Face: return "Face";
+  }
+  return "?";
+}
+
+namespace detail {
+/// The kinds that featureP / featureQ name for a face type of M (MddFaceType's comments);
+/// None: vertices when an id is set (NoContact's separating normal), else no feature.
+constexpr Feature typedFeature(MddFaceType type, bool ofP, int index) noexcept {
+  if (index < 0) return Feature{};
+  switch (type) {
+    case MddFaceType::FV: return Feature{ofP ? FeatureKind::Face : FeatureKind::Vertex, index};
+    case MddFaceType::VF: return Feature{ofP ? FeatureKind::Vertex : FeatureKind::Face, index};
+    case MddFaceType::EE: return Feature{FeatureKind::Edge, index};
+    case MddFaceType::Grazing:
+    case MddFaceType::None: return Feature{FeatureKind::Vertex, index};
+  }
+  return Feature{};
+}
+}  // namespace detail
+
 /// Options of mdd() and intersects(). Defaults are in core/defaults.hpp.
 template <class T>
 struct MddOptions {
@@ -146,6 +190,11 @@ struct MddResult {
   MddFaceType faceType = MddFaceType::None;
   int featureP = -1;  ///< face / vertex / edge id on P, per faceType (NoContact: see normal)
   int featureQ = -1;  ///< vertex / face / edge id on Q, per faceType (NoContact: see normal)
+  /// featureP and featureQ with their kinds, as faceType implies them (FV: a face of P and
+  /// a vertex of Q; VF: a vertex of P and a face of Q; EE: two edges; Grazing and
+  /// NoContact's separating normal: two vertices); kind None and index -1 where unset.
+  Feature featureOfP() const noexcept { return detail::typedFeature(faceType, true, featureP); }
+  Feature featureOfQ() const noexcept { return detail::typedFeature(faceType, false, featureQ); }
   /// Faces of M evaluated, per phase (summed over the d_max and d_min searches).
   int visitedFV = 0, visitedVF = 0, visitedEE = 0;
   /// True when a scan quadratic in the sizes ran: the local search's answer failed its
