@@ -26,7 +26,6 @@
 #include <string>
 #include <vector>
 
-#include "mink/core/detail/flat_hash_map.hpp"
 #include "mink/core/error.hpp"
 #include "mink/cpd/convex_map.hpp"
 #include "mink/cpd/convolution.hpp"
@@ -219,7 +218,6 @@ class LocalMinkowskiSum {
   /// facets_ := the compatible pairs whose facet meets the region box, sorted.
   void gather() {
     facets_.clear();
-    seen_.clear();
     if (options_.method == LocalSumMethod::BoxTrees) {
       if constexpr (ScalarTraits<T>::isExact) {
         cull();
@@ -286,7 +284,7 @@ class LocalMinkowskiSum {
 
   /// The triangle pairs (t_A, t_B) whose boxes' difference box(t_A) − box(t_B) meets the
   /// region's box, i.e. box(t_A) meets box(t_B) moved by the ball's centre and grown by
-  /// its radius, then the feature pairs of each, once. Complete: a feature pair's facet
+  /// its radius, then the feature pairs each owns. Complete: a feature pair's facet
   /// box lies in its triangles' difference box, so every facet meeting the region comes
   /// from such a triangle pair. The pad covers the double boxes' and the facet corners'
   /// rounding, generously (the exact box test in consider() decides).
@@ -300,14 +298,34 @@ class LocalMinkowskiSum {
     patch_.nodePairs = static_cast<int>(std::min<long long>(visited, std::numeric_limits<int>::max()));
   }
 
-  /// The feature pairs of triangle fa of A and fb of B (FV, VF, EE), each pair once.
+  /// The feature pairs of triangle fa of A and fb of B (FV, VF, EE) that this triangle
+  /// pair owns. A vertex or an edge is owned by one triangle that contains it (the first of
+  /// vertexTriangles(v), edgeTriangles(e).first), a face by itself; a feature pair comes
+  /// from its two owners only. Each feature pair is thus considered once, without a table
+  /// of the pairs seen (which, tens of thousands of entries per call, cost a cache miss per
+  /// lookup), and no culling loses one: its owners contain its features, so the owners'
+  /// pair passes every test that is conservative for a triangle pair (the difference of
+  /// their boxes, the sphere of t_A ⊕ −t_B) whenever the facet meets the region.
   void trianglePairFeatures(int fa, int fb) {
     const auto& ta = A_.triangle(fa);
     const auto& tb = B_.triangle(fb);
-    for (int j = 0; j < 3; ++j) once({ConvolutionType::FV, fa, tb[j], 0});
-    for (int i = 0; i < 3; ++i) once({ConvolutionType::VF, ta[i], fb, 0});
+    bool ownsA[3], ownsB[3];
+    for (int i = 0; i < 3; ++i) {
+      ownsA[i] = A_.vertexTriangles(ta[i])[0] == fa;
+      ownsB[i] = B_.vertexTriangles(tb[i])[0] == fb;
+    }
+    for (int j = 0; j < 3; ++j)
+      if (ownsB[j]) consider({ConvolutionType::FV, fa, tb[j], 0});
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) once({ConvolutionType::EE, A_.triangleEdge(fa, i), B_.triangleEdge(fb, j), 0});
+      if (ownsA[i]) consider({ConvolutionType::VF, ta[i], fb, 0});
+    for (int i = 0; i < 3; ++i) {
+      const int ea = A_.triangleEdge(fa, i);
+      if (A_.edgeTriangles(ea).first != fa) continue;
+      for (int j = 0; j < 3; ++j) {
+        const int eb = B_.triangleEdge(fb, j);
+        if (B_.edgeTriangles(eb).first == fb) consider({ConvolutionType::EE, ea, eb, 0});
+      }
+    }
   }
 
   /// A candidate pair: kept if compatible and its facet's box meets the region box.
@@ -382,7 +400,7 @@ class LocalMinkowskiSum {
     }
   }
 
-  /// Two leaves: the tight sphere of t_A ⊕ −t_B, then the feature pairs, each once.
+  /// Two leaves: the tight sphere of t_A ⊕ −t_B, then the feature pairs they own.
   void leafPair(int fa, int fb, const T& slack) {
     const auto& ta = A_.triangle(fa);
     const auto& tb = B_.triangle(fb);
@@ -392,10 +410,6 @@ class LocalMinkowskiSum {
     const Sphere<T> s = detail::enclosingSphere(pts, 9);
     if (!sphereMeetsRegion(s.centre, T(s.radius + slack))) return;
     trianglePairFeatures(fa, fb);
-  }
-
-  void once(const ConvolutionPair& c) {
-    if (seen_.insert(c.key()).second) consider(c);
   }
 
   /// x in the units the pipeline works in (x · 2^-scaleExp_).
@@ -437,7 +451,6 @@ class LocalMinkowskiSum {
   typename detail::Trimmer<T>::Region region_;
   detail::Trimmer<T> trimmer_;
   std::vector<ConvolutionPair> facets_;
-  detail::FlatHashSet<std::uint64_t> seen_;
   std::vector<std::pair<int, int>> stack_;
   MinkowskiPatch<T> patch_;
   // ConvexMaps: the two maps, each feature's cell of the last call, a walk's work space.
