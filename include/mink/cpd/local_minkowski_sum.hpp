@@ -356,14 +356,15 @@ class LocalMinkowskiSum {
     return true;
   }
 
-  /// Squared distance from x to the region box <= r²?
+  /// Does the box of the sphere (x, r) meet the region box?
   bool sphereMeetsRegion(const Vec3<T>& x, const T& r) const {
-    T d2 = T(0);
-    for (int a = 0; a < 3; ++a) {
-      if (x[a] < region_.lo[a]) d2 += (region_.lo[a] - x[a]) * (region_.lo[a] - x[a]);
-      if (x[a] > region_.hi[a]) d2 += (x[a] - region_.hi[a]) * (x[a] - region_.hi[a]);
-    }
-    return d2 <= r * r;
+    // The sphere's bounding box against the region's box, not the sphere itself: a facet is
+    // kept when its *box* meets the region's (consider()), and a facet inside a sphere has
+    // its box inside the sphere's box, not inside the sphere. Testing the sphere made the
+    // facets kept depend on which other triangle pairs reached them.
+    for (int a = 0; a < 3; ++a)
+      if (x[a] + r < region_.lo[a] || x[a] - r > region_.hi[a]) return false;
+    return true;
   }
 
   /// Theorem 2 culling over the two sphere trees, then the feature pairs of the leaves.
