@@ -79,6 +79,9 @@ constexpr double kSlack = 4.0;
 constexpr double kLevelsPerDoubling = 2.2;
 constexpr double kLevelsOffset = 1.0;
 constexpr double kSizeFactor = 4.5;
+// Largest level whose exact convexity checkStructure verifies (O(V^2) orient3d calls).
+constexpr int kConvexityCheckSize = kSanitized ? 200 : 600;
+constexpr int kExactConvexityCheckSize = kSanitized ? 60 : 150;
 
 template <class T>
 constexpr bool isExact() {
@@ -344,8 +347,9 @@ struct Checker {
 
 /// Structural invariants of every level above L0, against the definition of the
 /// construction: same points as the shape, consistent maps, strictly shrinking levels,
-/// and for exact T (where no kept point can be dropped by the re-hull) an independent
-/// removed set of vertices of degree <= maxRemovedDegree.
+/// an independent removed set of vertices of degree <= maxRemovedDegree (every level is
+/// L(i) minus that set: no kept point is dropped), and each level the exact hull of its
+/// points, triangulated.
 template <class T>
 void checkStructure(const ConvexPolyhedron<T>& P, const DKHierarchy<T>& H, const DKHierarchyOptions& opt,
                     const std::string& what) {
@@ -367,7 +371,7 @@ void checkStructure(const ConvexPolyhedron<T>& P, const DKHierarchy<T>& H, const
       ASSERT_TRUE(H.levelPoint(i, w) == P.vertex(H.originalIndex(i, w))) << "level " << i << " vertex " << w;
       ASSERT_GE(H.levelNeighbors(i, w).size(), 3);
     }
-    if constexpr (isExact<T>()) {
+    {
       for (int r = 0; r < H.levelSize(i - 1); ++r) {
         if (hit[r]) continue;
         EXPECT_LE(H.levelNeighbors(i - 1, r).size(), opt.maxRemovedDegree) << "level " << i - 1 << " vertex " << r;
@@ -375,6 +379,36 @@ void checkStructure(const ConvexPolyhedron<T>& P, const DKHierarchy<T>& H, const
           EXPECT_TRUE(hit[u]) << "level " << i - 1 << ": removed vertices " << r << " and " << u << " are adjacent";
       }
     }
+  }
+  // Every shape here comes from fromPoints (an exact hull), so no level is re-hulled and
+  // every level is a triangulation of the exact hull of its points: 3V - 6 edges, and each
+  // triangle (v, neighbour j, neighbour j+1) has every point of the level on or below its
+  // plane and one strictly below (exact orient3d). O(V^2) per level: levels up to
+  // kConvexityCheckSize points (exact T: kExactConvexityCheckSize) are checked.
+  EXPECT_EQ(H.rehulledLevels(), 0);
+  const int cap = isExact<T>() ? kExactConvexityCheckSize : kConvexityCheckSize;
+  for (int i = 0; i < H.numLevels(); ++i) {
+    const int V = H.levelSize(i);
+    if (V > cap || V < 4) continue;
+    long long degreeSum = 0;
+    int bad = 0;
+    for (int v = 0; v < V; ++v) {
+      const IndexRange nb = H.levelNeighbors(i, v);
+      degreeSum += nb.size();
+      for (int j = 0; j < nb.size(); ++j) {
+        const int a = nb[j], b = nb[(j + 1) % nb.size()];
+        if (a < v || b < v) continue;  // each triangle once, from its lowest corner
+        bool below = false;
+        for (int q = 0; q < V; ++q) {
+          const int o = orient3d(H.levelPoint(i, v), H.levelPoint(i, a), H.levelPoint(i, b), H.levelPoint(i, q));
+          if (o > 0 && bad++ == 0)
+            ADD_FAILURE() << "level " << i << ": point " << q << " above triangle (" << v << ", " << a << ", " << b << ")";
+          below |= o < 0;
+        }
+        if (!below && bad++ == 0) ADD_FAILURE() << "level " << i << ": flat triangle (" << v << ", " << a << ", " << b << ")";
+      }
+    }
+    EXPECT_EQ(degreeSum, 6LL * V - 12) << "level " << i << ": not a triangulated sphere";
   }
 }
 
@@ -537,6 +571,83 @@ TEST(DKHierarchy, ExactGmpqOtherParameters) {
     print(checkCase<Gmpq>("Gmpq ellipsoid 300 D=" + std::to_string(deg) + " top=" + std::to_string(top), pts,
                           kSanitized ? 60 : 150, 5006u + deg, opt));
   }
+}
+
+/// The cube [-1, 1]^3, each face a g x g grid of squares split into triangles, every grid
+/// point inside a face moved off its plane by up to `delta` (fromMesh accepts it within
+/// its tolerance): convex within the tolerance, not exactly.
+std::pair<std::vector<Vec3<double>>, std::vector<std::vector<int>>> bumpyCube(int g, double delta, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> bump(-delta, delta);
+  std::vector<Vec3<double>> vertices;
+  std::vector<std::vector<int>> faces;
+  std::vector<int> id((g + 1) * (g + 1) * (g + 1), -1);
+  const auto vertex = [&](int a, int b, int c) {
+    int& slot = id[(a * (g + 1) + b) * (g + 1) + c];
+    if (slot >= 0) return slot;
+    Vec3<double> p(2.0 * a / g - 1, 2.0 * b / g - 1, 2.0 * c / g - 1);
+    const int inside = (a > 0 && a < g) + (b > 0 && b < g) + (c > 0 && c < g);
+    if (inside == 2) {
+      for (int k = 0; k < 3; ++k)
+        if (p[k] == 1.0 || p[k] == -1.0) p[k] += bump(rng);
+    }
+    slot = static_cast<int>(vertices.size());
+    vertices.push_back(p);
+    return slot;
+  };
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      for (int i = 0; i < g; ++i) {
+        for (int j = 0; j < g; ++j) {
+          const auto at = [&](int a, int b) {
+            int c[3];
+            c[axis] = side ? g : 0;
+            c[(axis + 1) % 3] = a;
+            c[(axis + 2) % 3] = b;
+            return vertex(c[0], c[1], c[2]);
+          };
+          const int q0 = at(i, j), q1 = at(i + 1, j), q2 = at(i + 1, j + 1), q3 = at(i, j + 1);
+          if (side) {
+            faces.push_back({q0, q1, q2});
+            faces.push_back({q0, q2, q3});
+          } else {
+            faces.push_back({q0, q2, q1});
+            faces.push_back({q0, q3, q2});
+          }
+        }
+      }
+    }
+  }
+  return {vertices, faces};
+}
+
+TEST(DKHierarchy, ShapeConvexOnlyWithinToleranceIsReHulled) {
+  // Holes there can lack an ear with every ring point on or below it (a grid point lifted
+  // by a rounding): such a level is re-hulled, and the queries stay right within the
+  // shape's tolerance. An exact hull of the same points needs no re-hull.
+  int rehulled = 0;
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto mesh = bumpyCube(12, 1e-14, seed);
+    const ConvexPolyhedron<double> P = ConvexPolyhedron<double>::fromMesh(mesh.first, mesh.second);
+    ASSERT_FALSE(P.isExactHull());
+    ASSERT_EQ(P.numVertices(), 866);
+    DKHierarchyOptions opt;
+    opt.topVertices = 4;
+    const DKHierarchy<double> H(P, opt);
+    rehulled += H.rehulledLevels();
+    EXPECT_NE(H.stopReason(), DKBuildStop::HullFailed);
+    std::mt19937 rng(seed);
+    const std::vector<Vec3<double>> dirs = directions<double>(3000, rng);
+    const ReferenceScan<double> scan(P);
+    Checker<double> dk{P, "bumpy cube"};
+    for (int k = 0; k < static_cast<int>(dirs.size()); ++k) dk.check("DKHierarchy::support", k, dirs[k], H.support(dirs[k]), scan.max(dirs[k]));
+    EXPECT_EQ(dk.failures, 0) << dk.firstFailure;
+
+    const ConvexPolyhedron<double> hull = ConvexPolyhedron<double>::fromPoints(mesh.first);
+    EXPECT_EQ(DKHierarchy<double>(hull, opt).rehulledLevels(), 0);
+  }
+  EXPECT_GT(rehulled, 0) << "no seed exercised the re-hull";
 }
 
 TEST(DKHierarchy, RejectsBadOptions) {

@@ -22,9 +22,11 @@ constexpr double kHullToleranceFactor = 64.0;
 /// Unit: vertices. Measured (benchmarks/README.md; double, ellipsoid point sets, random
 /// directions, three runs): the hierarchy's query time falls below a cold hill-climb's
 /// from vertex 0 at 48 .. 128 vertices, but by less than 25% up to 512 .. 768 vertices;
-/// from 1024 on it is >= 1.3x faster (2x at 4096, 7.7x at 100k). Its build (2.1 .. 2.8x
-/// the hull build, ~240 bytes per vertex) pays back after ~1.5e5 such queries. Safe
-/// range: 16 .. 1e5 (any value is correct; only speed and memory change).
+/// from 1024 on it is >= 1.3x faster (2x at 4096, 7.7x at 100k). Its build (0.2 .. 0.3x
+/// the hull build since levels are made by filling holes, ~270 bytes per vertex; 2.1 ..
+/// 2.8x when every level was re-hulled) pays back after ~5e3 such queries at 1024
+/// vertices (benchmarks/run_foundation.sh). Safe range: 16 .. 1e5 (any value is correct;
+/// only speed and memory change).
 constexpr int kHierarchyMinVertices = 1024;
 
 /// Dobkin–Kirkpatrick construction removes independent vertices of degree at most

@@ -6,13 +6,24 @@
 // representation); used by the MDD paper (section IV-B.1) to find the supporting vertex
 // of -Q for every face visited by SEARCH-FV.
 //
-// Build (levels L0 .. Lk):
-//   1. L0 is the shape's vertex graph.
+// Build (levels L0 .. Lk), every level the graph of a triangulation of its hull's surface:
+//   1. L0 is the shape's vertex graph with each polygonal face split into triangles
+//      (zigzag: no corner gets more than three of a face's triangles).
 //   2. Greedily pick an independent set of vertices of L(i) of degree <= maxRemovedDegree
 //      (lowest degree first; four "anchor" vertices spanning a tetrahedron are never picked).
-//   3. L(i+1) = convex hull of the remaining vertices (ConvexPolyhedron::fromPoints with the
-//      shape's own tolerance); record, per vertex w of L(i+1), its index in L(i) and in L0,
-//      and its "pocket": the neighbours of w in L(i) that are not in L(i+1).
+//   3. L(i+1) = L(i) without them, each one's hole filled (the true Dobkin–Kirkpatrick
+//      step, O(degree^2) per hole, O(|L(i)|) per level): the hole of a removed vertex v is
+//      bounded by its ring of neighbours, and the faces the removal uncovers on the hull of
+//      the rest are facets of the hull of that ring, all corners on it. Ear clipping cuts
+//      only ears (r[j-1], r[j], r[j+1]) with every ring point on or below their plane,
+//      decided by the exact orient3d, so the fill is exact for any T whenever the level
+//      is exactly convex (every shape fromPoints builds, every exact shape). Record, per
+//      vertex w of L(i+1), its index in L(i) and in L0, and its "pocket": the neighbours
+//      of w in L(i) that are not in L(i+1).
+//      A hole with no such ear, or a fill that would repeat an edge, happens only on a
+//      shape convex within its tolerance but not exactly (floating-point fromMesh): that
+//      level is then the hull of the kept points (ConvexPolyhedron::fromPoints with the
+//      shape's tolerance), rehulledLevels() counts it.
 //   4. Stop when L(i+1) has <= topVertices vertices, or when a round removes nothing.
 // Query support(d):
 //   1. Scan the top level Lk for the vertex maximising d.x.
@@ -28,10 +39,11 @@
 // no strictly better neighbour in L(i-1) and, L(i-1) being the graph of a convex polytope,
 // v maximises d.x on L(i-1) (a vertex with no strictly better neighbour is a global
 // maximiser: the edges at a vertex span a cone containing the polytope). If a pocket
-// vertex u beats v, u was removed (for exact T every kept point survives the re-hull: a
-// subset of extreme points stays extreme); by independence all of u's neighbours were
-// kept, hence are in L(i) and no better than v < u, so u maximises L(i-1). Induction from
-// the top scan gives the answer on L0 with at most one move per level.
+// vertex u beats v, u was removed (every kept point is in L(i): a subset of extreme points
+// stays extreme); by independence all of u's neighbours were kept, hence are in L(i) and
+// no better than v < u, so u maximises L(i-1). Induction from the top scan gives the
+// answer on L0 with at most one move per level. (Diagonals of flat faces are edges too:
+// a vertex of a triangulated convex surface that no neighbour beats is still a maximiser.)
 // With inexact T a tolerant re-hull may drop a kept point lying within the tolerance of a
 // face (it then sits in its neighbours' pockets, so it is still considered), and
 // comparisons round; step 3 makes the answer a vertex no neighbour of which is better
@@ -47,8 +59,9 @@
 // average degree < 6, so more than n(D-5)/(D+1) vertices have degree <= D, and a greedy
 // independent set among them, each pick blocking at most D+1 candidates, holds more than
 // n(D-5)/(D+1)^2 - 4 of them: n/27 - 4 for D = 8), so there are O(log n) levels of
-// geometrically shrinking size and rebuilding each by quickhull costs O(n log n) in total
-// (expected).
+// geometrically shrinking size, each made in O(size * D^2) by the hole fills: O(n D^2) in
+// all (a fifth of the hull build at n = 100k, benchmarks/run_foundation.sh). Before the
+// fills every level was re-hulled, O(n log n) expected and 2 - 2.5 hull builds.
 //
 // Conventions: every vertex index returned or taken by the public interface is an index
 // of the ORIGINAL shape (0 .. shape.numVertices()-1) unless it is explicitly a level
@@ -67,6 +80,9 @@
 #include "mink/polyhedron/convex_polyhedron.hpp"
 
 namespace mink {
+namespace detail {
+class DkPolygonFill;
+}  // namespace detail
 
 /// Construction parameters of DKHierarchy.
 struct DKHierarchyOptions {
@@ -131,11 +147,17 @@ class DKHierarchy {
   std::size_t memoryBytes() const;
   /// Why the construction stopped (ReachedTop unless the shape or options are unusual).
   DKBuildStop stopReason() const { return stop_; }
+  /// Levels made by re-hulling the kept points (fromPoints) because some hole had no
+  /// exact fill: only on shapes that are convex within their tolerance but not exactly
+  /// (floating-point fromMesh). 0 for every exact hull (fromPoints, exact T).
+  int rehulledLevels() const { return rehulled_; }
 
   // ---- level structure (level-local vertex indices) ----
   /// Position of vertex v of level i (shape frame).
   const Vec3<T>& levelPoint(int i, int v) const { return levels_[i].point[v]; }
-  /// Neighbours of vertex v in the graph of level i (level-i indices, CCW from outside).
+  /// Neighbours of vertex v in the graph of level i (level-i indices, CCW from outside):
+  /// the edges of a triangulation of the level's hull (level 0: the shape's edges and the
+  /// diagonals that split its polygonal faces).
   IndexRange levelNeighbors(int i, int v) const {
     const Level& L = levels_[i];
     return IndexRange(L.neighbor.data() + L.start[v], L.neighbor.data() + L.start[v + 1]);
@@ -159,9 +181,22 @@ class DKHierarchy {
 
   template <bool kCount>
   int supportImpl(const Vec3<T>& direction, DKSupportStats* stats) const;
+  /// Level of P's vertex graph with each polygonal face split into triangles (pockets,
+  /// below and original left empty).
+  static Level triangulatedGraph(const ConvexPolyhedron<T>& P, detail::DkPolygonFill& fill);
+  /// L(i+1) = L(i) without the removed vertices (blocked == 2), each hole filled by the
+  /// exact ear clipping of DkPolygonFill (point, start, neighbor, below). False when a
+  /// hole has no qualifying ear or the result is not a simple graph.
+  static bool fillHoles(const Level& cur, const std::vector<char>& blocked, const std::vector<int>& kept,
+                        detail::DkPolygonFill& fill, Level& next);
+  /// L(i+1) = the hull of the kept points (fromPoints with `tolerance`), triangulated.
+  /// False when the hull throws.
+  static bool rehull(const Level& cur, const std::vector<int>& kept, const T& tolerance,
+                     detail::DkPolygonFill& fill, Level& next);
 
   std::vector<Level> levels_;
   DKBuildStop stop_ = DKBuildStop::ReachedTop;
+  int rehulled_ = 0;
 };
 
 /// The shape's hierarchy, built on first use (or up front by prepare(), prepare.hpp) and

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "mink/core/error.hpp"
+#include "mink/core/index_range.hpp"
+#include "mink/core/orientation.hpp"
 #include "mink/core/scalar_traits.hpp"
 #include "mink/core/types.hpp"
 #include "mink/polyhedron/convex_polyhedron.hpp"
@@ -68,6 +70,137 @@ std::array<int, 4> dkAnchors(const std::vector<Vec3<T>>& p) {
   return {a, b, c, d};
 }
 
+
+/// Triangulates polygons (a mesh face, or the hole a removed vertex leaves) and lists,
+/// per corner, the diagonals the triangulation adds there. Corners are local positions
+/// 0 .. k-1 of a loop counter-clockwise seen from outside; triangles are emitted with
+/// the same orientation. diagonals(j) holds the far corners of the new edges at corner j
+/// in counter-clockwise order from corner j+1 to corner j-1 (exclusive): exactly what
+/// replaces, in the neighbour list of corner j, the removed vertex (a hole) or the face
+/// (a mesh face) lying between those two corners. Scratch vectors are reused: no
+/// allocation once they have grown to the largest polygon.
+class DkPolygonFill {
+ public:
+  /// Zigzag triangulation (ends alternately advanced): no geometry, every corner gets at
+  /// most three triangles. For flat convex faces any triangulation is exact.
+  void zigzag(int k) {
+    tris_.clear();
+    int i = 0, j = k - 1;
+    bool left = true;
+    while (j - i >= 2) {
+      if (left) {
+        tris_.push_back({i, i + 1, j});
+        ++i;
+      } else {
+        tris_.push_back({i, j - 1, j});
+        --j;
+      }
+      left = !left;
+    }
+  }
+
+  /// The hole of a removed vertex, its ring `ring` (k >= 3 points, counter-clockwise seen
+  /// from outside): ear clipping that cuts only an ear (r[j-1], r[j], r[j+1]) with every
+  /// ring point on or below its plane (orient3d <= 0, exact), i.e. a piece of a facet of
+  /// the hull of the ring facing the removed vertex. When the points are the extreme
+  /// points of a convex polytope and the ring is the link of one of them, those facets
+  /// are exactly the faces the removal uncovers (all their corners are ring points), so
+  /// such an ear always exists and the fill is a triangulation of the new hull's
+  /// surface there. False when no ear qualifies (the shape is not exactly convex: a
+  /// floating-point fromMesh shape within its tolerance); the caller then re-hulls.
+  template <class T, class PointOf>
+  bool earClip(int k, PointOf&& point) {
+    tris_.clear();
+    prev_.resize(k);
+    next_.resize(k);
+    state_.assign(k, kUnknown);
+    for (int j = 0; j < k; ++j) {
+      prev_[j] = j == 0 ? k - 1 : j - 1;
+      next_[j] = j == k - 1 ? 0 : j + 1;
+    }
+    int remaining = k, j = 0, misses = 0;
+    while (remaining > 3) {
+      if (state_[j] == kUnknown) state_[j] = qualifies<T>(k, prev_[j], j, next_[j], point) ? kYes : kNo;
+      if (state_[j] == kNo) {
+        if (++misses >= remaining) return false;
+        j = next_[j];
+        continue;
+      }
+      const int a = prev_[j], c = next_[j];
+      tris_.push_back({a, j, c});
+      next_[a] = c;
+      prev_[c] = a;
+      state_[a] = state_[c] = kUnknown;
+      --remaining;
+      misses = 0;
+      j = c;
+    }
+    if (!qualifies<T>(k, prev_[j], j, next_[j], point)) return false;
+    tris_.push_back({prev_[j], j, next_[j]});
+    return true;
+  }
+
+  /// Fills diagonals from the last triangulation of a k-gon. False if the triangles do
+  /// not form a triangulation of the loop (cannot happen for the two methods above).
+  bool diagonals(int k) {
+    stepStart_.assign(k + 1, 0);
+    for (const auto& t : tris_)
+      for (int c : t) ++stepStart_[c + 1];
+    for (int c = 0; c < k; ++c) stepStart_[c + 1] += stepStart_[c];
+    stepFrom_.resize(stepStart_[k]);
+    stepTo_.resize(stepStart_[k]);
+    fillAt_.assign(stepStart_.begin(), stepStart_.end() - 1);
+    // At corner a of the counter-clockwise triangle (a, b, c) the edges turn from b to c.
+    for (const auto& t : tris_) {
+      for (int r = 0; r < 3; ++r) {
+        const int at = t[r], s = fillAt_[at]++;
+        stepFrom_[s] = t[(r + 1) % 3];
+        stepTo_[s] = t[(r + 2) % 3];
+      }
+    }
+    diagStart_.assign(k + 1, 0);
+    diag_.clear();
+    for (int j = 0; j < k; ++j) {
+      const int last = j == 0 ? k - 1 : j - 1;
+      int x = j == k - 1 ? 0 : j + 1;
+      const int b = stepStart_[j], e = stepStart_[j + 1];
+      for (int guard = b; x != last; ++guard) {
+        if (guard == e) return false;
+        int s = b;
+        while (s < e && stepFrom_[s] != x) ++s;
+        if (s == e) return false;
+        x = stepTo_[s];
+        if (x != last) diag_.push_back(x);
+      }
+      diagStart_[j + 1] = static_cast<int>(diag_.size());
+    }
+    return true;
+  }
+
+  IndexRange diagonalsAt(int j) const {
+    return IndexRange(diag_.data() + diagStart_[j], diag_.data() + diagStart_[j + 1]);
+  }
+
+ private:
+  static constexpr char kUnknown = 0, kYes = 1, kNo = 2;
+
+  template <class T, class PointOf>
+  static bool qualifies(int k, int a, int j, int c, PointOf& point) {
+    const Vec3<T>& pa = point(a);
+    const Vec3<T>& pj = point(j);
+    const Vec3<T>& pc = point(c);
+    for (int q = 0; q < k; ++q) {
+      if (q == a || q == j || q == c) continue;
+      if (orient3d(pa, pj, pc, point(q)) > 0) return false;
+    }
+    return true;
+  }
+
+  std::vector<std::array<int, 3>> tris_;
+  std::vector<int> prev_, next_, stepStart_, stepFrom_, stepTo_, fillAt_, diagStart_, diag_;
+  std::vector<char> state_;
+};
+
 }  // namespace detail
 
 template <class T>
@@ -80,25 +213,12 @@ DKHierarchy<T>::DKHierarchy(const ConvexPolyhedron<T>& shape, const DKHierarchyO
     throw InvalidInput("DKHierarchyOptions::topVertices must be >= 4, got " +
                        std::to_string(options.topVertices));
   }
-  const int n = shape.numVertices();
-  {
-    Level L0;
-    L0.point = shape.vertices();
-    L0.start.resize(n + 1);
-    L0.start[0] = 0;
-    for (int v = 0; v < n; ++v) L0.start[v + 1] = L0.start[v] + shape.degree(v);
-    L0.neighbor.reserve(L0.start[n]);
-    for (int v = 0; v < n; ++v) {
-      for (int u : shape.vertexNeighbors(v)) L0.neighbor.push_back(u);
-    }
-    levels_.push_back(std::move(L0));
-  }
+  detail::DkPolygonFill fill;
+  levels_.push_back(triangulatedGraph(shape, fill));
   const std::array<int, 4> anchors = detail::dkAnchors(levels_[0].point);
-  const HullOptions<T> hullOptions{shape.tolerance()};
 
   std::vector<char> isAnchor, blocked, inNext;
   std::vector<int> byDegree, bucketStart, kept;
-  std::vector<Vec3<T>> keptPoints;
   while (levelSize(numLevels() - 1) > options.topVertices) {
     const Level& cur = levels_.back();
     const int m = static_cast<int>(cur.point.size());
@@ -132,49 +252,28 @@ DKHierarchy<T>::DKHierarchy(const ConvexPolyhedron<T>& shape, const DKHierarchyO
       }
     }
     kept.clear();
-    keptPoints.clear();
-    for (int v = 0; v < m; ++v) {
-      if (blocked[v] != 2) {
-        kept.push_back(v);
-        keptPoints.push_back(cur.point[v]);
-      }
-    }
+    for (int v = 0; v < m; ++v)
+      if (blocked[v] != 2) kept.push_back(v);
     if (static_cast<int>(kept.size()) == m) {
       stop_ = DKBuildStop::NoRemovableVertex;
       break;
     }
 
-    // Every kept vertex is extreme in L(i), hence in the hull of any subset containing it,
-    // and the anchors keep that subset full-dimensional, so this cannot throw for exact T.
-    // With a tolerance, near-degenerate shapes might still be judged flat: then the
-    // current level stays the top and stopReason() says so (queries remain correct).
-    std::unique_ptr<ConvexPolyhedron<T>> hull;
-    try {
-      hull = std::make_unique<ConvexPolyhedron<T>>(
-          ConvexPolyhedron<T>::fromPoints(keptPoints, hullOptions));
-    } catch (const InvalidInput&) {
-      stop_ = DKBuildStop::HullFailed;
-      break;
-    }
-    const int h = hull->numVertices();  // <= kept.size() < m: every round shrinks
-
     Level next;
-    next.point = hull->vertices();
-    next.start.resize(h + 1);
-    next.start[0] = 0;
-    for (int w = 0; w < h; ++w) next.start[w + 1] = next.start[w] + hull->degree(w);
-    next.neighbor.reserve(next.start[h]);
-    next.original.resize(h);
-    next.below.resize(h);
-    for (int w = 0; w < h; ++w) {
-      for (int u : hull->vertexNeighbors(w)) next.neighbor.push_back(u);
-      const int v = kept[hull->inputIndex(w)];
-      next.below[w] = v;
-      next.original[w] = isBase ? v : cur.original[v];
+    if (!fillHoles(cur, blocked, kept, fill, next)) {
+      // Not exactly convex (a floating-point fromMesh shape): the hull of the kept points.
+      if (!rehull(cur, kept, shape.tolerance(), fill, next)) {
+        stop_ = DKBuildStop::HullFailed;
+        break;
+      }
+      ++rehulled_;
     }
+    const int h = static_cast<int>(next.point.size());
+    next.original.resize(h);
+    for (int w = 0; w < h; ++w) next.original[w] = isBase ? next.below[w] : cur.original[next.below[w]];
     // Pockets: the neighbours in L(i) of each vertex that did not survive into L(i+1)
-    // (the removed ones, and for inexact T kept ones the re-hull dropped). Only they can
-    // beat the image of L(i+1)'s maximiser. (Copying their points next to the indices
+    // (the removed ones, and after a re-hull kept ones it dropped). Only they can beat
+    // the image of L(i+1)'s maximiser. (Copying their points next to the indices
     // measured no faster and cost ~40% more memory.)
     inNext.assign(m, 0);
     for (int w = 0; w < h; ++w) inNext[next.below[w]] = 1;
@@ -194,6 +293,133 @@ DKHierarchy<T>::DKHierarchy(const ConvexPolyhedron<T>& shape, const DKHierarchyO
     }
     levels_.push_back(std::move(next));
   }
+}
+
+template <class T>
+typename DKHierarchy<T>::Level DKHierarchy<T>::triangulatedGraph(const ConvexPolyhedron<T>& P,
+                                                                 detail::DkPolygonFill& fill) {
+  // Diagonals per half-edge (a face's corner at the half-edge's origin), CSR in half-edge
+  // order, which is face order; triangles add none.
+  const int numHe = P.numHalfEdges();
+  std::vector<int> diagStart(numHe + 1, 0), diag;
+  for (int f = 0; f < P.numFaces(); ++f) {
+    const int k = P.faceSize(f), h0 = P.faceStart(f);
+    if (k == 3) {
+      for (int t = 0; t < 3; ++t) diagStart[h0 + t + 1] = static_cast<int>(diag.size());
+      continue;
+    }
+    fill.zigzag(k);
+    fill.diagonals(k);  // a zigzag is a triangulation: cannot fail
+    const IndexRange loop = P.faceVertices(f);
+    for (int t = 0; t < k; ++t) {
+      for (int x : fill.diagonalsAt(t)) diag.push_back(loop[x]);
+      diagStart[h0 + t + 1] = static_cast<int>(diag.size());
+    }
+  }
+  Level L;
+  L.point = P.vertices();
+  const int n = P.numVertices();
+  L.start.resize(n + 1);
+  L.start[0] = 0;
+  L.neighbor.reserve(numHe + diag.size());
+  for (int v = 0; v < n; ++v) {
+    // Around v: neighbour i, then the face between neighbours i and i+1, whose loop runs
+    // v -> neighbour i: its diagonals at v, counter-clockwise from neighbour i on.
+    const IndexRange nb = P.vertexNeighbors(v), out = P.vertexHalfEdges(v);
+    for (int i = 0; i < nb.size(); ++i) {
+      L.neighbor.push_back(nb[i]);
+      const int h = out[i];
+      for (int j = diagStart[h]; j < diagStart[h + 1]; ++j) L.neighbor.push_back(diag[j]);
+    }
+    L.start[v + 1] = static_cast<int>(L.neighbor.size());
+  }
+  return L;
+}
+
+template <class T>
+bool DKHierarchy<T>::fillHoles(const Level& cur, const std::vector<char>& blocked, const std::vector<int>& kept,
+                               detail::DkPolygonFill& fill, Level& next) {
+  const int m = static_cast<int>(cur.point.size());
+  // Per slot s of a removed vertex's neighbour list (ring corner j = s - start[v]): the
+  // diagonals its fill adds at that corner, as vertices of L(i), in seq[seqStart[s] ..
+  // seqStart[s + 1]). Slots of kept vertices get empty ranges.
+  std::vector<int> seqStart(cur.neighbor.size() + 1, 0), seq;
+  for (int v = 0; v < m; ++v) {
+    const int b = cur.start[v], e = cur.start[v + 1];
+    if (blocked[v] == 2) {
+      const int k = e - b;
+      const int* ring = cur.neighbor.data() + b;
+      const auto pointOf = [&](int j) -> const Vec3<T>& { return cur.point[ring[j]]; };
+      if (!fill.template earClip<T>(k, pointOf) || !fill.diagonals(k)) return false;
+      for (int j = 0; j < k; ++j) {
+        for (int x : fill.diagonalsAt(j)) seq.push_back(ring[x]);
+        seqStart[b + j + 1] = static_cast<int>(seq.size());
+      }
+    } else {
+      for (int s = b; s < e; ++s) seqStart[s + 1] = static_cast<int>(seq.size());
+    }
+  }
+  std::vector<int> newIndex(m, -1);
+  const int h = static_cast<int>(kept.size());
+  for (int w = 0; w < h; ++w) newIndex[kept[w]] = w;
+  next.point.resize(h);
+  next.below = kept;
+  next.start.resize(h + 1);
+  next.start[0] = 0;
+  next.neighbor.reserve(cur.neighbor.size());
+  // A removed neighbour x of u sits between u's neighbours r[j+1] and r[j-1] (u = r[j]
+  // on x's ring): the fill's diagonals at corner j replace it, in the same order. The
+  // stamps check that no list repeats a vertex or holds its owner (a fill that is not a
+  // triangulation of the new hull: only on shapes that are not exactly convex).
+  std::vector<int> stamp(h, -1);
+  for (int w = 0; w < h; ++w) {
+    const int u = kept[w];
+    next.point[w] = cur.point[u];
+    stamp[w] = w;
+    for (int t = cur.start[u]; t < cur.start[u + 1]; ++t) {
+      const int x = cur.neighbor[t];
+      const auto add = [&](int y) {
+        const int ny = newIndex[y];
+        if (stamp[ny] == w) return false;
+        stamp[ny] = w;
+        next.neighbor.push_back(ny);
+        return true;
+      };
+      if (newIndex[x] >= 0) {
+        if (!add(x)) return false;
+        continue;
+      }
+      int s = cur.start[x];
+      while (s < cur.start[x + 1] && cur.neighbor[s] != u) ++s;
+      if (s == cur.start[x + 1]) return false;  // not a symmetric graph: cannot happen
+      for (int j = seqStart[s]; j < seqStart[s + 1]; ++j)
+        if (!add(seq[j])) return false;
+    }
+    next.start[w + 1] = static_cast<int>(next.neighbor.size());
+    if (next.start[w + 1] - next.start[w] < 3) return false;
+  }
+  return true;
+}
+
+template <class T>
+bool DKHierarchy<T>::rehull(const Level& cur, const std::vector<int>& kept, const T& tolerance,
+                            detail::DkPolygonFill& fill, Level& next) {
+  std::vector<Vec3<T>> keptPoints;
+  keptPoints.reserve(kept.size());
+  for (int v : kept) keptPoints.push_back(cur.point[v]);
+  // With a tolerance, near-degenerate shapes might be judged flat: then the current level
+  // stays the top and stopReason() says so (queries remain correct).
+  std::unique_ptr<ConvexPolyhedron<T>> hull;
+  try {
+    hull = std::make_unique<ConvexPolyhedron<T>>(ConvexPolyhedron<T>::fromPoints(keptPoints, HullOptions<T>{tolerance}));
+  } catch (const InvalidInput&) {
+    return false;
+  }
+  next = triangulatedGraph(*hull, fill);
+  const int h = hull->numVertices();  // <= kept.size() < m: every round shrinks
+  next.below.resize(h);
+  for (int w = 0; w < h; ++w) next.below[w] = kept[hull->inputIndex(w)];
+  return true;
 }
 
 template <class T>
