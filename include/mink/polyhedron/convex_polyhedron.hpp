@@ -52,6 +52,8 @@ struct HullOptions {
 namespace detail {
 template <class T>
 struct PolyhedronBuilder;
+template <class T>
+struct PolyhedronFinish;
 
 /// Lazily made structures derived from a shape (its Dobkin–Kirkpatrick hierarchy, ...),
 /// shared by every copy of the shape and built at most once, thread-safely. The
@@ -245,6 +247,8 @@ class ConvexPolyhedron {
   }
   template <class U>
   friend struct detail::PolyhedronBuilder;
+  template <class U>
+  friend struct detail::PolyhedronFinish;
   template <class U>
   static std::vector<Vec3<T>> convertPoints(const std::vector<Vec3<U>>& points) {
     std::vector<Vec3<T>> out;
