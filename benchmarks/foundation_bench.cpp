@@ -2,8 +2,10 @@
 // hull build (ConvexPolyhedron::fromPoints), Dobkin–Kirkpatrick hierarchy build, and
 // support queries by the hierarchy, by hill-climbing (cold from vertex 0, and warm from
 // the previous answer while the direction turns slowly) and by a brute-force scan.
-// Then the crossover size where the hierarchy beats a cold hill-climb (the value of
-// defaults::kHierarchyMinVertices) and a sweep of the hierarchy's two parameters.
+// Then degenerate shapes (flat caps, a high-degree apex, a fromMesh cube convex only
+// within its tolerance: builds and DK against the scan), the crossover size where the
+// hierarchy beats a cold hill-climb (the value of defaults::kHierarchyMinVertices) and a
+// sweep of the hierarchy's two parameters.
 // Anchors for the builds, timed in the same run on the same points (when found at
 // configure time): CGAL's convex_hull_3 over Epick into a Surface_mesh (a hull with its
 // half-edge adjacency: what fromPoints builds), and FCL's fcl::Convexd made from that
@@ -18,7 +20,8 @@
 // Usage: mink_foundation_bench [out.csv] [--quick] [--builds]
 //   out.csv   default benchmarks/results/foundation.csv (directory must exist)
 //   --quick   fewer repetitions and sizes (smoke test, numbers not for publication)
-//   --builds  the build rows of section 1 only (hull, anchors, hierarchy)
+//   --builds  the build rows of section 1 (hull, anchors, hierarchy) and the degenerate
+//             shapes only
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -45,6 +48,7 @@
 #endif
 
 #include "bench_common.hpp"
+#include "support/bumpy_cube.hpp"
 #include "mink/core/defaults.hpp"
 #include "mink/hierarchy/dk_hierarchy.hpp"
 #include "mink/polyhedron/convex_polyhedron.hpp"
@@ -177,6 +181,87 @@ void printRow(const std::string& what, const Timing& s, const char* unit, double
 }
 
 }  // namespace
+
+// Degenerate shapes, the builds' worst cases: a cylinder (two flat m-gon caps, points on
+// the caps and the rulings that are not vertices), a cone whose apex has degree m, and a
+// cube whose faces are 100 x 100 grids given to fromMesh with the grid points moved up to
+// 1e-14 off their planes (convex only within the tolerance: the hierarchy re-hulls the
+// levels where a hole has no exact fill). Hull (or fromMesh) build, hierarchy build,
+// re-hulled levels, and DK support against the scan on 10,000 random directions.
+void degenerateBuilds(Csv& csv, bool quick) {
+  const int m = quick ? 5000 : 50000;
+  std::vector<Vec> cylinder, cone;
+  {
+    std::mt19937 rng(21u);
+    std::uniform_int_distribution<int> pick(0, m - 1), level(-15, 15);
+    const double pi = std::acos(-1.0);
+    for (int k = 0; k < m; ++k) {
+      const double a = 2 * pi * k / m;
+      cylinder.emplace_back(std::cos(a), std::sin(a), -1.0);
+      cylinder.emplace_back(std::cos(a), std::sin(a), 1.0);
+      cone.emplace_back(std::cos(a), std::sin(a), 0.0);
+    }
+    cone.emplace_back(0.0, 0.0, 3.0);
+    for (int i = 0; i < m; ++i) {
+      const double a = 2 * pi * pick(rng) / m, r = (level(rng) + 16) / 33.0;
+      cylinder.emplace_back(std::cos(a), std::sin(a), level(rng) / 16.0);         // on a ruling
+      cylinder.emplace_back(r * std::cos(a), r * std::sin(a), i % 2 ? 1.0 : -1.0);  // inside a cap
+    }
+  }
+  const int g = quick ? 30 : 100;
+  const auto grid = mink_test::bumpyCube(g, 1e-14, 22u);
+  const std::vector<Vec>& gridV = grid.first;
+  const std::vector<std::vector<int>>& gridF = grid.second;
+  struct Shape {
+    const char* name;  // also the CSV's param column: no commas
+    std::function<ConvexPolyhedron<double>()> make;
+  };
+  const Shape shapes[] = {
+      {"cylinder_flat_caps", [&] { return ConvexPolyhedron<double>::fromPoints(cylinder); }},
+      {"cone_apex_degree_m", [&] { return ConvexPolyhedron<double>::fromPoints(cone); }},
+      {"bumpy_grid_cube_fromMesh", [&] { return ConvexPolyhedron<double>::fromMesh(gridV, gridF); }},
+  };
+
+  const std::vector<Vec> dirs = randomDirections(10000, 23u);
+  for (const Shape& shape : shapes) {
+    const std::string name = shape.name;
+    const auto& make = shape.make;
+    std::printf("\n  degenerate: %s\n", shape.name);
+    try {
+      const ConvexPolyhedron<double> P = make();
+      const int V = P.numVertices();
+      const int reps = quick ? 2 : 5;
+      const Timing hull = timeIt(reps, 1, [&] { gSink += make().numVertices(); });
+      printRow("shape build (fromPoints / fromMesh)", hull, "ms", 1e-3);
+      const Timing hier = timeIt(reps, 1, [&] { gSink += DKHierarchy<double>(P).numLevels(); });
+      printRow("hierarchy build", hier, "ms", 1e-3);
+      const DKHierarchy<double> H(P);
+      std::printf("    %d vertices, %d faces; hierarchy / shape build %.2f; %d levels, %d re-hulled\n", V,
+                  P.numFaces(), hier.median / hull.median, H.numLevels(), H.rehulledLevels());
+      const Timing dk = timeIt(quick ? 3 : 9, static_cast<int>(dirs.size()), [&] {
+        long long s = 0;
+        for (const Vec& d : dirs) s += H.support(d);
+        gSink += s;
+      });
+      printRow("support: DK hierarchy", dk, "us", 1);
+      const int bruteQueries = 200;
+      const Timing brute = timeIt(quick ? 2 : 5, bruteQueries, [&] {
+        long long s = 0;
+        for (int k = 0; k < bruteQueries; ++k) s += P.supportBruteForce(dirs[k]);
+        gSink += s;
+      });
+      printRow("support: brute-force scan", brute, "us", 1);
+      std::ostringstream note;
+      note << name << "; levels=" << H.numLevels() << " rehulled=" << H.rehulledLevels();
+      csv.row("degenerate_build", V, V, "shape", name, hull, note.str());
+      csv.row("degenerate_build", V, V, "hierarchy", name, hier, note.str());
+      csv.row("degenerate_query", V, V, "dk", name, dk, note.str());
+      csv.row("degenerate_query", V, V, "brute", name, brute, note.str());
+    } catch (const std::exception& e) {
+      std::printf("    skipped: %s\n", e.what());
+    }
+  }
+}
 
 int main(int argc, char** argv) {
   std::string csvPath = "benchmarks/results/foundation.csv";
@@ -350,8 +435,10 @@ int main(int argc, char** argv) {
     csv.value("fit", 0, "hierarchy_us_per_nlog2n", a);
   }
 
+  degenerateBuilds(csv, quick);
+
   if (buildsOnly) {
-    std::printf("\n  load average at end: %s\n  CSV written to %s (--builds: section 1's builds only)\n",
+    std::printf("\n  load average at end: %s\n  CSV written to %s (--builds: section 1's builds and the degenerate shapes only)\n",
                 loadAverage().c_str(), csvPath.c_str());
     return gSink == 42 ? 1 : 0;
   }

@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "mink/hierarchy/dk_hierarchy.hpp"
+#include "support/bumpy_cube.hpp"
 
 namespace mink {
 namespace {
@@ -573,54 +574,6 @@ TEST(DKHierarchy, ExactGmpqOtherParameters) {
   }
 }
 
-/// The cube [-1, 1]^3, each face a g x g grid of squares split into triangles, every grid
-/// point inside a face moved off its plane by up to `delta` (fromMesh accepts it within
-/// its tolerance): convex within the tolerance, not exactly.
-std::pair<std::vector<Vec3<double>>, std::vector<std::vector<int>>> bumpyCube(int g, double delta, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> bump(-delta, delta);
-  std::vector<Vec3<double>> vertices;
-  std::vector<std::vector<int>> faces;
-  std::vector<int> id((g + 1) * (g + 1) * (g + 1), -1);
-  const auto vertex = [&](int a, int b, int c) {
-    int& slot = id[(a * (g + 1) + b) * (g + 1) + c];
-    if (slot >= 0) return slot;
-    Vec3<double> p(2.0 * a / g - 1, 2.0 * b / g - 1, 2.0 * c / g - 1);
-    const int inside = (a > 0 && a < g) + (b > 0 && b < g) + (c > 0 && c < g);
-    if (inside == 2) {
-      for (int k = 0; k < 3; ++k)
-        if (p[k] == 1.0 || p[k] == -1.0) p[k] += bump(rng);
-    }
-    slot = static_cast<int>(vertices.size());
-    vertices.push_back(p);
-    return slot;
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    for (int side = 0; side < 2; ++side) {
-      for (int i = 0; i < g; ++i) {
-        for (int j = 0; j < g; ++j) {
-          const auto at = [&](int a, int b) {
-            int c[3];
-            c[axis] = side ? g : 0;
-            c[(axis + 1) % 3] = a;
-            c[(axis + 2) % 3] = b;
-            return vertex(c[0], c[1], c[2]);
-          };
-          const int q0 = at(i, j), q1 = at(i + 1, j), q2 = at(i + 1, j + 1), q3 = at(i, j + 1);
-          if (side) {
-            faces.push_back({q0, q1, q2});
-            faces.push_back({q0, q2, q3});
-          } else {
-            faces.push_back({q0, q2, q1});
-            faces.push_back({q0, q3, q2});
-          }
-        }
-      }
-    }
-  }
-  return {vertices, faces};
-}
-
 TEST(DKHierarchy, ShapeConvexOnlyWithinToleranceIsReHulled) {
   // Holes there can lack an ear with every ring point on or below it (a grid point lifted
   // by a rounding): such a level is re-hulled, and the queries stay right within the
@@ -628,7 +581,7 @@ TEST(DKHierarchy, ShapeConvexOnlyWithinToleranceIsReHulled) {
   int rehulled = 0;
   for (unsigned seed = 1; seed <= 4; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    const auto mesh = bumpyCube(12, 1e-14, seed);
+    const auto mesh = mink_test::bumpyCube(12, 1e-14, seed);
     const ConvexPolyhedron<double> P = ConvexPolyhedron<double>::fromMesh(mesh.first, mesh.second);
     ASSERT_FALSE(P.isExactHull());
     ASSERT_EQ(P.numVertices(), 866);
