@@ -317,7 +317,7 @@ Eigen::Isometry3d iso(const Mat3d& R, const Vec3d& t) {
 
 // Aggregates for the target lines.
 struct Targets {
-  std::vector<double> gjkRatio, mprRatio, mprRatio1, bulletRatio;  // per pair
+  std::vector<double> gjkRatio, mprRatio, mprRatio1, bulletRatio, intersectsRatio;  // per pair
   double maxErr = 0, shareM = 0, shareEE = 0;
   long long shareCount = 0;
   double scalingCold1k = 0, scalingCold100k = 0, coherenceRatio = 0, exactOverDouble = 0;
@@ -599,11 +599,13 @@ void paperSection(const Options& opt, const PaperShapes& shapes, std::vector<Pai
     tg.mprRatio.push_back(rM);
     tg.mprRatio1.push_back(mcPen.median / mp1.median);
     tg.bulletRatio.push_back(rB);
+    tg.intersectsRatio.push_back(it.median / gj.median);
     for (double x : byName("mink_cold")) allMink.push_back(x);
     for (double x : byName("ccd_gjk")) allGjk.push_back(x);
     csv.value("paper", pd.name, "ratio_mink_over_gjk", rG);
     csv.value("paper", pd.name, "ratio_mink_pen_over_mpr2", rM);
     csv.value("paper", pd.name, "ratio_bullet_subsimplex_over_mink", 1.0 / rB);
+    csv.value("paper", pd.name, "ratio_intersects_over_gjk", it.median / gj.median);
 
     auto cell = [](const Summary& s) {
       char b[64];
@@ -1222,12 +1224,14 @@ int main(int argc, char** argv) {
     std::vector<double> inv;
     for (double r : tg.bulletRatio) inv.push_back(1.0 / r);
     std::printf("  Bullet subsimplex cast directional / mink cold per pair: %s (target >= 5)\n", range(inv).c_str());
+    std::printf("  mink::intersects / ccdGJKIntersect per pair: %s (target <= 1.5)\n", range(tg.intersectsRatio).c_str());
     std::printf("  mink max error on the exact subsample: %.3g (target <= 1e-10)\n", tg.maxErr);
     std::printf("  faces of M visited: %.2f%% (target <= 5%%), EE faces: %.2f%% (target <= 1%%)\n",
                 100 * tg.shareM / std::max(1LL, tg.shareCount), 100 * tg.shareEE / std::max(1LL, tg.shareCount));
     csv.value("targets", "all", "gjk_ratio_median", quantile(tg.gjkRatio, 0.5));
     csv.value("targets", "all", "mpr_ratio_median", quantile(tg.mprRatio, 0.5));
     csv.value("targets", "all", "bullet_over_mink_median", quantile(inv, 0.5));
+    csv.value("targets", "all", "intersects_gjk_ratio_median", quantile(tg.intersectsRatio, 0.5));
     csv.value("targets", "all", "max_error", tg.maxErr);
     csv.value("targets", "all", "share_faces_M", tg.shareM / std::max(1LL, tg.shareCount));
     csv.value("targets", "all", "share_faces_EE", tg.shareEE / std::max(1LL, tg.shareCount));
@@ -1244,7 +1248,9 @@ int main(int argc, char** argv) {
     std::printf("  exact rationals / double: %.0fx\n", tg.exactOverDouble);
     csv.value("targets", "all", "exact_over_double", tg.exactOverDouble);
   }
-  std::printf("\n  load average at end: %s; wall time of the program %.0f s\n", loadAverage().c_str(),
+  std::printf("\n  libccd calls stopped by the support-call cap (peers.hpp, kCcdSupportCap): %lld\n",
+              mink_bench::ccdSupportCapHits());
+  std::printf("  load average at end: %s; wall time of the program %.0f s\n", loadAverage().c_str(),
               microsSince(start) * 1e-6);
   return gSink == 42 ? 1 : 0;
 }

@@ -134,8 +134,26 @@ struct CcdBody {
   } record;
 };
 
+/// Support calls per libccd call beyond which the bench's support function answers the
+/// zero vector for both bodies: libccd's MPR portal discovery and refinement loops have no
+/// iteration cap (only its penetration phase honours max_iterations), and at
+/// mpr_tolerance 1e-12 one P3-P3 query of a 10-orientation run looped forever. A zero
+/// support point ends every MPR loop (its dot product with the direction is 0). Converging
+/// calls here take a few dozen support calls.
+constexpr int kCcdSupportCap = 4096;
+/// libccd calls that reached kCcdSupportCap in this program (printed by the benchmarks).
+inline long long& ccdSupportCapHits() {
+  static long long n = 0;
+  return n;
+}
+
 inline void ccdSupport(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
   CcdBody& b = *const_cast<CcdBody*>(static_cast<const CcdBody*>(obj));
+  if (b.record.count >= kCcdSupportCap) {
+    ++b.record.count;
+    ccdVec3Set(out, 0.0, 0.0, 0.0);
+    return;
+  }
   const Vec3d d(dir->v[0], dir->v[1], dir->v[2]);
   const Vec3d p = b.placed->support(d);
   b.record.push(d, p);
@@ -171,7 +189,8 @@ class CcdPair {
     ccd_.support2 = ccdSupport;
     ccd_.center1 = ccdCentre;
     ccd_.center2 = ccdCentre;
-    // Iteration cap as libccd's default.
+    // libccd's default iteration cap (ULONG_MAX); its MPR loops are bounded by the
+    // support-call cap instead (kCcdSupportCap).
     ccd_.mpr_tolerance = mprTolerance;
     ccd_.epa_tolerance = 1e-12;
     ccd_.dist_tolerance = 1e-12;
@@ -186,7 +205,11 @@ class CcdPair {
     pP_.hint = pQ_.hint = 0;
     a_.centre = pP_.centroid();
     b_.centre = pQ_.centroid();
-    return ccdGJKIntersect(&a_, &b_, &ccd_) != 0;
+    a_.record.clear();
+    b_.record.clear();
+    const bool hit = ccdGJKIntersect(&a_, &b_, &ccd_) != 0;
+    if (a_.record.count > kCcdSupportCap) ++ccdSupportCapHits();
+    return hit;
   }
 
   MprAnswer mprDirectional(const Vec3d& s) {
@@ -205,6 +228,7 @@ class CcdPair {
     b_.centre = cP - alpha * s;
     const int r1 = ccdMPRPenetration(&a_, &b_, &ccd_, &depth, &dir, &pos);
     out.micros += microsSince(t0);
+    if (a_.record.count > kCcdSupportCap) ++ccdSupportCapHits();
     if (r1 != 0) return out;
     out.overlap = true;
     out.perpendicular = depth;
@@ -217,6 +241,7 @@ class CcdPair {
     b_.centre = cP - 0.5 * t1 * s;
     const int r2 = ccdMPRPenetration(&a_, &b_, &ccd_, &depth, &dir, &pos);
     out.micros += microsSince(t0);
+    if (a_.record.count > kCcdSupportCap) ++ccdSupportCapHits();
     double t2 = t1;
     if (r2 == 0) {
       if (!readExit(s, depth, dir, t2)) ++out.portalFallbacks;

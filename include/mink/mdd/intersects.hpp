@@ -1,6 +1,7 @@
 // mink/mdd/intersects.hpp — collision mode of MDD-DUAL (Choi et al., section V): do two
-// placed convex polyhedra share a point? The exit-face search run from an interior point
-// of M = P ⊕ −Q towards the origin, stopped at the first face that puts the origin outside.
+// placed convex polyhedra share a point? From an interior point of M = P ⊕ −Q towards the
+// origin: the exit portal in collision mode, then (touching contacts) the exit-face search
+// stopped at the first face that puts the origin outside.
 #pragma once
 
 #include "mink/mdd/detail/exit_face.hpp"
@@ -9,13 +10,16 @@
 namespace mink {
 
 /// Collision mode (section V): do P and Q (closed sets) share a point? Touching counts.
-/// The centre of duality is any interior point of M: interior(P) − interior(Q); the
-/// search towards the origin stops at the first face with the origin strictly outside.
+/// The centre of duality is any interior point of M: interior(P) − interior(Q). The exit
+/// portal towards the origin (MPR, detail/exit_portal.hpp) answers first; where it cannot
+/// (touching within the tolerance), the search towards the origin stops at the first face
+/// with the origin strictly outside.
 /// Options as for mdd(): shapes within `touchTolerance` (a length; automatic by default)
-/// count as touching, hence intersecting; `maxVisits` / `maxExhaustivePairs` cap the
-/// search, and a search that hits a cap answers `true` (the conservative answer for
-/// collision detection); `useHierarchy` as in mdd(). Throws InvalidInput for non-finite /
-/// non-orthonormal poses and a NaN touchTolerance.
+/// count as touching, hence intersecting (the portal says "apart" only beyond it);
+/// `maxVisits` / `maxExhaustivePairs` cap the search after the portal, and a search that
+/// hits a cap answers `true` (the conservative answer for collision detection);
+/// `useHierarchy` as in mdd(). Throws InvalidInput for non-finite / non-orthonormal poses
+/// and a NaN touchTolerance.
 template <class T>
 bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                 const Pose<T>& poseQ, MddCache<T>& cache, const MddOptions<T>& options = {}) {
@@ -27,14 +31,29 @@ bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Convex
   detail::PairFrame<T> F(P, Q, R, t, options.useHierarchy);
   const Vec3<T> x0 = P.interiorPoint() - (R * Q.interiorPoint() + t);
   if (x0 == Vec3<T>::Zero()) return true;
-  MddResult<T> res;
-  detail::ExitFaceSearch<T> query(F, x0, cache, options, res);
-  bool separated = false;
-  detail::MFace<T> separator;
   // The search direction at unit order (exact scaling, and the searches compare ratios
   // homogeneous in it): for shapes of 1e-224, x0 times the faces' offsets underflowed and
   // the searches' comparisons were all false (overlap reported for shapes apart).
   const Vec3<T> towards = detail::unitOrder(Vec3<T>(-x0));
+  // 1. The exit portal in collision mode (MPR): a handful of support queries settle all
+  //    but touching contacts; "inside" by exact predicates, "apart" by a separating axis
+  //    beyond the touch tolerance, the same certificate as step 2's.
+  {
+    T tol = T(0);
+    if constexpr (!ScalarTraits<T>::isExact)
+      tol = options.touchTolerance >= T(0)
+                ? options.touchTolerance
+                : T(defaults::kMddTouchToleranceFactor) * ScalarTraits<T>::epsilon() * F.sceneSize();
+    const detail::ExitPortal<T> portal = detail::exitPortal(F, x0, towards, cache.vertexP, cache.vertexQ, &tol);
+    if (portal.verdict == detail::ExitPortal<T>::Verdict::Inside) return true;
+    if (portal.verdict == detail::ExitPortal<T>::Verdict::Outside) return false;
+  }
+  // 2. Else (touching within the tolerance, a degenerate portal, its cap) the paper's
+  //    searches towards the origin.
+  MddResult<T> res;
+  detail::ExitFaceSearch<T> query(F, x0, cache, options, res);
+  bool separated = false;
+  detail::MFace<T> separator;
   detail::MFace<T> f = query.exitFace(towards, x0, true, &separated, &separator);
   if (separated) {
     if constexpr (ScalarTraits<T>::isExact) {

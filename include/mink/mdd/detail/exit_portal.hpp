@@ -16,9 +16,20 @@
 // For a polytope the refinement ends on the exit facet after finitely many steps; it is
 // also capped (defaults::kMddExitPortalSteps). The estimate is only a starting point:
 // mdd.hpp certifies the face it leads to, or runs the paper's searches from it.
+//
+// Collision mode (intersects.hpp; Snethen's MPR as a yes/no test): the ray runs from c
+// through the origin, and the portal stops as soon as either
+//   - a support point of M along a direction d is below the origin along d by more than
+//     the touch tolerance (h_M(d) < −tol |d|, from P's and Q's own vertices): d separates;
+//   - the origin lies in the tetrahedron (c, X1, X2, X3), a subset of M: decided by exact
+//     orientation predicates (core/orientation.hpp) on the corners as computed, so "inside"
+//     is exact on those numbers, which are points of M up to one rounding each.
+// Neither (a touching contact, the cap, a degenerate portal): Unknown, and intersects()
+// runs the paper's searches.
 #pragma once
 
 #include "mink/core/defaults.hpp"
+#include "mink/core/orientation.hpp"
 #include "mink/gauss_map/arc_intersection.hpp"  // det3
 #include "mink/mdd/detail/pair_frame.hpp"
 
@@ -35,13 +46,17 @@ struct ExitPortal {
   int steps = 0;
   /// True when the portal's plane was shown to support M (exact for exact T).
   bool converged = false;
+  /// Collision mode only: what the portal proved about the origin.
+  enum class Verdict { Unknown, Inside, Outside } verdict = Verdict::Unknown;
 };
 
 /// The exit-facet estimate for the ray c + u σ (frame of P). hintP / hintQ: support
-/// vertex hints (in and out).
+/// vertex hints (in and out). With `separationTol` (collision mode: σ must point from c
+/// at the origin), stops early with `verdict` Inside or Outside (header comment); an
+/// Outside verdict's `normal` is the separating direction.
 template <class T>
 ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP,
-                         int& hintQ) {
+                         int& hintQ, const T* separationTol = nullptr) {
   struct Corner {
     Vec3<T> a;  // support point of M minus c
     int p, q;
@@ -68,13 +83,31 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
     return out;
   };
   const int cap = defaults::kMddExitPortalSteps;
+  // Collision mode: does the support point y along d put the origin outside M by more
+  // than the tolerance? From the vertices themselves (y.a is relative to c and rounded).
+  auto separates = [&](const Vec3<T>& d, const Corner& y) {
+    if (!separationTol) return false;
+    const T h = d.dot(F.P().vertex(y.p) - F.q(y.q));
+    if (!(h < T(0))) return false;
+    if constexpr (!ScalarTraits<T>::isExact)
+      if (!(h < -*separationTol * d.norm())) return false;
+    out.verdict = ExitPortal<T>::Verdict::Outside;
+    return true;
+  };
+  // Collision mode: the origin, relative to c in the corners' units (exact).
+  const Vec3<T> origin = e != 0 ? timesPow2(Vec3<T>(-c), -e) : Vec3<T>(-c);
+  const Vec3<T> zero = Vec3<T>::Zero();
 
   Corner b1 = support(sigma, true);
+  if (separates(sigma, b1)) return finish(sigma, b1, false);
   const Vec3<T> m = b1.a.cross(sigma);
   if (m == Vec3<T>::Zero()) return finish(sigma, b1, false);  // the ray meets a vertex of M
   Corner x = support(m, true);
+  if (separates(m, x)) return finish(m, x, false);
   // det(b1, x, σ) = −m·x < 0, so (x, b1, ·) is the positive order around σ.
-  Corner b3 = support(Vec3<T>(x.a.cross(b1.a)), true);
+  const Vec3<T> m3 = x.a.cross(b1.a);
+  Corner b3 = support(m3, true);
+  if (separates(m3, b3)) return finish(m3, b3, false);
   Corner b2 = b1;
   b1 = x;
   // Invariant from here: det(b1, b2, b3) > 0 (c strictly inside M makes every support
@@ -84,12 +117,14 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
       const Vec3<T> n = b3.a.cross(b2.a);
       if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
       const Corner y = support(n, true);
+      if (separates(n, y)) return finish(n, y, false);
       b1 = y;
       std::swap(b2, b3);
     } else if (det3(b3.a, b1.a, sigma) < T(0)) {
       const Vec3<T> n = b1.a.cross(b3.a);
       if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
       const Corner y = support(n, true);
+      if (separates(n, y)) return finish(n, y, false);
       const Corner o1 = b1;
       b1 = b3;
       b2 = y;
@@ -98,6 +133,7 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
       const Vec3<T> n = b2.a.cross(b1.a);
       if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
       const Corner y = support(n, true);
+      if (separates(n, y)) return finish(n, y, false);
       std::swap(b1, b2);
       b3 = y;
     } else {
@@ -107,12 +143,21 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
   while (out.steps < cap) {
     const Vec3<T> n = (b2.a - b1.a).cross(b3.a - b1.a);
     if (n == Vec3<T>::Zero()) return finish(sigma, b1, false);
+    // Collision mode: the origin on c's side of the portal, so inside the tetrahedron
+    // (c, b1, b2, b3) if the exact predicates agree (the float test only screens).
+    if (separationTol && !(n.dot(origin - b1.a) > T(0)) && orient3d(zero, b1.a, b2.a, b3.a) > 0 &&
+        orient3d(b1.a, b2.a, b3.a, origin) <= 0 && orient3d(zero, b2.a, b3.a, origin) >= 0 &&
+        orient3d(zero, b3.a, b1.a, origin) >= 0 && orient3d(zero, b1.a, b2.a, origin) >= 0) {
+      out.verdict = ExitPortal<T>::Verdict::Inside;
+      return finish(n, b1, false);
+    }
     // Hill-climb from the corner furthest along n: the shortest climb.
     const T h1 = n.dot(b1.a), h2 = n.dot(b2.a), h3 = n.dot(b3.a);
     const Corner& from = h1 >= h2 ? (h1 >= h3 ? b1 : b3) : (h2 >= h3 ? b2 : b3);
     hintP = from.p;
     hintQ = from.q;
     const Corner y = support(n, false);
+    if (separates(n, y)) return finish(n, y, false);
     const bool known = (y.p == b1.p && y.q == b1.q) || (y.p == b2.p && y.q == b2.q) || (y.p == b3.p && y.q == b3.q);
     if (known || !(n.dot(y.a - b1.a) > T(0))) return finish(n, y, true);
     // The plane through the ray and y splits the portal; σ lies in the sub-cone on the
