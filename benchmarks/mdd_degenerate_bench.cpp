@@ -12,7 +12,9 @@
 // a pair, the worst case a physics engine meets), with the shapes built beforehand.
 // Reported beside the times: how many queries used the exhaustive fallback (usedFallback)
 // or an edge-pair scan quadratic in two vertex degrees (usedPairScan), and the faces of M
-// each visited (median).
+// each visited (median). intersects() (no cache) is timed the same way on the same
+// placements, degenerate and generic (one query per scene: it has no direction), with
+// the same targets.
 //
 // Usage: mink_mdd_degenerate_bench [outdir] [--max-n N]
 //   writes <outdir>/mdd_degenerate.csv (default outdir benchmarks/results); the table goes
@@ -46,12 +48,32 @@ struct Row {
   int fallbacks = 0;                    // degenerate queries that used the exhaustive fallback
   int pairScans = 0;                    // degenerate queries with a deg x deg edge-pair scan
   int visited = 0;                      // median faces of M visited, degenerate
+  double intDegenerate = 0, intGeneric = 0;  // intersects(), us per query
 };
 
 struct Measured {
   double median = 0, max = 0;
   int fallbacks = 0, pairScans = 0, visited = 0;
+  double intersectsUs = 0;
 };
+
+/// us per call of f: repeated until 200 us have passed, the minimum over 3 such passes.
+template <class F>
+double timeQuery(F&& f) {
+  double best = 1e300;
+  for (int pass = 0; pass < 3; ++pass) {
+    const Clock::time_point t0 = Clock::now();
+    int reps = 0;
+    double us = 0;
+    do {
+      f();
+      ++reps;
+      us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+    } while (us < 200.0);
+    best = std::min(best, us / reps);
+  }
+  return best;
+}
 
 Measured measure(const mink_test::ContactScene& sc) {
   const auto P = ConvexPolyhedron<double>::fromPoints(sc.P);
@@ -66,20 +88,9 @@ Measured measure(const mink_test::ContactScene& sc) {
     m.fallbacks += r.usedFallback;
     m.pairScans += r.usedPairScan;
     visits.push_back(r.visitedFV + r.visitedVF + r.visitedEE);
-    double best = 1e300;
-    for (int pass = 0; pass < 3; ++pass) {
-      const Clock::time_point t0 = Clock::now();
-      int reps = 0;
-      double us = 0;
-      do {
-        gSink = gSink + mink::mdd(P, poseP, Q, poseQ, s).parameter;
-        ++reps;
-        us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
-      } while (us < 200.0);
-      best = std::min(best, us / reps);
-    }
-    times.push_back(best);
+    times.push_back(timeQuery([&] { gSink = gSink + mink::mdd(P, poseP, Q, poseQ, s).parameter; }));
   }
+  m.intersectsUs = timeQuery([&] { gSink = gSink + (mink::intersects(P, poseP, Q, poseQ) ? 1.0 : 0.0); });
   m.median = mink_bench::quantile(times, 0.5);
   m.max = *std::max_element(times.begin(), times.end());
   m.visited = static_cast<int>(mink_bench::quantile(visits, 0.5));
@@ -105,40 +116,49 @@ int main(int argc, char** argv) {
   std::printf("MDD on degenerate contacts beside their generic twins (Q turned by 0.01 rad)\n");
   std::printf("  machine: %s, load %s\n", mink_bench::machineLine().c_str(), mink_bench::loadAverage().c_str());
   std::printf("  us per query: median over the family's directions of the minimum of 3 timed passes; mdd() without cache\n\n");
-  std::printf("%-15s %5s %12s %12s %8s %12s %9s %10s %8s\n", "family", "n", "degenerate", "generic", "ratio",
-              "degen. max", "fallbacks", "pair scans", "visited");
+  std::printf("%-15s %5s %12s %12s %8s %12s %9s %10s %8s | %11s %11s %8s\n", "family", "n", "degenerate", "generic",
+              "ratio", "degen. max", "fallbacks", "pair scans", "visited", "int. degen.", "int. gener.", "ratio");
   std::vector<Row> rows;
   for (const std::string& fam : mink_test::degenerateFamilies()) {
     for (int n = 16; n <= maxN; n *= 2) {
       const Measured d = measure(mink_test::degenerateScene(fam, n, false));
       const Measured g = measure(mink_test::degenerateScene(fam, n, true));
-      Row r{fam, fam == "boxes-aligned" ? 4 : n, d.median, g.median, d.max, d.fallbacks, d.pairScans, d.visited};
+      Row r{fam, fam == "boxes-aligned" ? 4 : n, d.median, g.median, d.max, d.fallbacks, d.pairScans,
+            d.visited, d.intersectsUs, g.intersectsUs};
       rows.push_back(r);
-      std::printf("%-15s %5d %12.2f %12.2f %7.2fx %12.2f %9d %10d %8d\n", r.family.c_str(), r.n, r.degenerate,
-                  r.generic, r.degenerate / r.generic, r.degenerateMax, r.fallbacks, r.pairScans, r.visited);
+      std::printf("%-15s %5d %12.2f %12.2f %7.2fx %12.2f %9d %10d %8d | %11.2f %11.2f %7.2fx\n", r.family.c_str(), r.n,
+                  r.degenerate, r.generic, r.degenerate / r.generic, r.degenerateMax, r.fallbacks, r.pairScans,
+                  r.visited, r.intDegenerate, r.intGeneric, r.intDegenerate / r.intGeneric);
       std::fflush(stdout);
       if (fam == "boxes-aligned") break;  // no n
     }
   }
-  double worstRatio = 0, worstAtMax = 0, worstQueryAtMax = 0;
+  double worstRatio = 0, worstAtMax = 0, worstQueryAtMax = 0, worstIntRatio = 0, worstIntAtMax = 0;
   for (const Row& r : rows) {
     worstRatio = std::max(worstRatio, r.degenerate / r.generic);
+    worstIntRatio = std::max(worstIntRatio, r.intDegenerate / r.intGeneric);
     if (r.n == maxN || r.family == "boxes-aligned") {
       worstAtMax = std::max(worstAtMax, r.degenerate);
       worstQueryAtMax = std::max(worstQueryAtMax, r.degenerateMax);
+      worstIntAtMax = std::max(worstIntAtMax, r.intDegenerate);
     }
   }
   std::printf("\ntargets: degenerate / generic <= 20x: worst %.2fx (%s); degenerate median < 1000 us at n = %d: worst %.1f us (%s)\n",
               worstRatio, worstRatio <= 20 ? "met" : "SHORT", maxN, worstAtMax, worstAtMax < 1000 ? "met" : "SHORT");
   std::printf("         slowest single degenerate query at n = %d: %.1f us (%s)\n", maxN, worstQueryAtMax,
               worstQueryAtMax < 1000 ? "under 1 ms" : "over 1 ms");
+  std::printf("         intersects(): degenerate / generic worst %.2fx (%s); degenerate at n = %d: worst %.1f us (%s)\n",
+              worstIntRatio, worstIntRatio <= 20 ? "met" : "SHORT", maxN, worstIntAtMax,
+              worstIntAtMax < 1000 ? "met" : "SHORT");
   const std::string csv = outdir + "/mdd_degenerate.csv";
   std::ofstream out(csv);
   out << "# " << mink_bench::machineLine() << "\n";
-  out << "family,n,degenerate_us,generic_us,degenerate_max_us,fallbacks,pair_scans,visited\n";
+  out << "family,n,degenerate_us,generic_us,degenerate_max_us,fallbacks,pair_scans,visited,intersects_degenerate_us,"
+         "intersects_generic_us\n";
   for (const Row& r : rows)
     out << r.family << "," << r.n << "," << r.degenerate << "," << r.generic << "," << r.degenerateMax << ","
-        << r.fallbacks << "," << r.pairScans << "," << r.visited << "\n";
+        << r.fallbacks << "," << r.pairScans << "," << r.visited << "," << r.intDegenerate << "," << r.intGeneric
+        << "\n";
   std::printf("wrote %s; wall time %.0f s\n", csv.c_str(),
               std::chrono::duration<double>(Clock::now() - start).count());
   return 0;

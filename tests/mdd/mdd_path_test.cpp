@@ -3,12 +3,15 @@
 // and their generic twins (tests/support/degenerate_contacts.hpp): usedFallback iff the
 // exhaustive scan or the chord answered, a Grazing face iff the grazing step did, fromCache
 // iff the cache did, None only without an answer; a repeated query with a cache is answered
-// by it, a caller's visit cap of 0 by nothing. MddResult::featureOfP / featureOfQ: with Q
+// by it, a caller's visit cap of 0 by nothing. A one-off penetrating query that stops at
+// the nearer exit answers as the paper's search of both exits does. MddResult::featureOfP / featureOfQ: with Q
 // moved by parameter * s, the typed features meet (a vertex on a face's plane, two edges).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "mink/mink.hpp"
 #include "support/degenerate_contacts.hpp"
@@ -141,8 +144,10 @@ TEST(MddPath, TypedFeaturesMeetWhenQIsMoved) {
 }
 
 TEST(MddPath, RepeatedQueryIsAnsweredByTheCache) {
-  // Boxes turned by the generic twin's rotation, Q above P: separated along -z, each exit
-  // face a proper face of M.
+  // Boxes turned by the generic twin's rotation, Q overlapping P slightly: penetrating
+  // along s, each exit face a proper face of M. The pair's first query keeps only the
+  // nearer end of the chord (the other lies beyond the centre of duality), the second
+  // both ends, and the third is answered by the cache.
   const mink_test::ContactScene sc = mink_test::degenerateScene("boxes-aligned", 4, true);
   const Pair p = build(sc);
   mink::MddCache<double> cache;
@@ -150,6 +155,8 @@ TEST(MddPath, RepeatedQueryIsAnsweredByTheCache) {
   const auto first = mink::mdd(p.P, p.poseP, p.Q, p.poseQ, s, cache);
   ASSERT_NE(first.path, MddPath::None);
   EXPECT_NE(first.path, MddPath::Cache);
+  const auto second = mink::mdd(p.P, p.poseP, p.Q, p.poseQ, s, cache);
+  EXPECT_EQ(second.parameter, first.parameter);
   const auto again = mink::mdd(p.P, p.poseP, p.Q, p.poseQ, s, cache);
   EXPECT_TRUE(again.fromCache);
   EXPECT_EQ(again.path, MddPath::Cache);
@@ -167,3 +174,93 @@ TEST(MddPath, CallersVisitCapLeavesNoPath) {
 }
 
 }  // namespace
+
+namespace {
+
+// Two random convex hulls overlapping by about a tenth of their size (shallow: the origin
+// is often nearer one end of the line's chord in M than the centre of duality is), and
+// random directions: penetrating queries.
+struct Overlap {
+  mink::ConvexPolyhedron<double> P, Q;
+  mink::Pose<double> poseP, poseQ;
+  std::vector<Eigen::Vector3d> dirs;
+};
+
+Overlap overlapping(unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  auto cloud = [&](double r, int n) {
+    std::vector<Eigen::Vector3d> v;
+    for (int i = 0; i < n; ++i) v.push_back(r * Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized());
+    return v;
+  };
+  Overlap o{mink::ConvexPolyhedron<double>::fromPoints(cloud(1.0, 40)),
+            mink::ConvexPolyhedron<double>::fromPoints(cloud(0.7, 30)), {}, {}, {}};
+  o.poseQ.rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  o.poseQ.translation = Eigen::Vector3d(1.45, 0.1, -0.05);
+  for (int i = 0; i < 40; ++i) o.dirs.push_back(Eigen::Vector3d(g(rng), g(rng), g(rng)));
+  return o;
+}
+
+}  // namespace
+
+TEST(MddPath, OneOffPenetratingQueryMatchesBothExits) {
+  // A pair's first query stops at the exit towards the origin when it is nearer than the
+  // centre of duality (the other exit lies beyond it); the paper's d_min over both exits
+  // (what mddExact runs) must give the same status, parameter and face.
+  int penetrating = 0, skipped = 0;
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    const Overlap o = overlapping(seed);
+    for (const Eigen::Vector3d& s : o.dirs) {
+      mink::MddCache<double> c1, c2;
+      const auto one = mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s, c1);
+      const auto both = mink::detail::mddQuery(o.P, o.poseP, o.Q, o.poseQ, s, c2, mink::MddOptions<double>(), true);
+      ASSERT_EQ(one.status, both.status) << seed;
+      EXPECT_EQ(one.parameter, both.parameter) << seed;
+      EXPECT_EQ(one.faceType, both.faceType) << seed;
+      EXPECT_EQ(one.featureP, both.featureP) << seed;
+      EXPECT_EQ(one.featureQ, both.featureQ) << seed;
+      EXPECT_LT((one.witnessP - one.witnessQ - one.parameter * s).norm(), 1e-9) << seed;
+      if (one.status != MddStatus::Penetrating) continue;
+      ++penetrating;
+      // Both exits were kept by the full query; one side only where the second was skipped.
+      const int kept1 = (c1.exitFaces[0].type != mink::MddFaceType::None) +
+                        (c1.exitFaces[1].type != mink::MddFaceType::None);
+      const int kept2 = (c2.exitFaces[0].type != mink::MddFaceType::None) +
+                        (c2.exitFaces[1].type != mink::MddFaceType::None);
+      EXPECT_EQ(kept2, 2) << seed;
+      if (kept1 == 1) {
+        ++skipped;
+        EXPECT_LT(one.visitedFV + one.visitedVF + one.visitedEE, both.visitedFV + both.visitedVF + both.visitedEE);
+      }
+      // Kept by side: [0] the exit along +s, [1] along −s; the answer is on its side.
+      const int side = one.parameter > 0 ? 0 : 1;
+      EXPECT_EQ(c1.exitFaces[side].type, one.faceType) << seed;
+      EXPECT_EQ(c1.exitFaces[side].a, one.featureP) << seed;
+      EXPECT_EQ(c1.exitFaces[side].b, one.featureQ) << seed;
+    }
+  }
+  EXPECT_GT(penetrating, 50);
+  EXPECT_GT(skipped, 10);
+  EXPECT_LT(skipped, penetrating);
+}
+
+TEST(MddPath, RepeatedPenetratingQueryIsAnsweredByTheCache) {
+  // The first query of a pair may keep one end of the chord; the second keeps both, and
+  // from then on a resting contact is answered by the cache.
+  const Overlap o = overlapping(7);
+  int cachedAnswers = 0;
+  for (const Eigen::Vector3d& s : o.dirs) {
+    mink::MddCache<double> cache;
+    const auto first = mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s, cache);
+    if (first.status != MddStatus::Penetrating) continue;
+    EXPECT_FALSE(first.fromCache);
+    mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s, cache);
+    const auto third = mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s, cache);
+    EXPECT_TRUE(third.fromCache);
+    EXPECT_EQ(third.status, MddStatus::Penetrating);
+    EXPECT_EQ(third.parameter, first.parameter);
+    cachedAnswers += third.fromCache;
+  }
+  EXPECT_GT(cachedAnswers, 10);
+}

@@ -39,11 +39,7 @@ bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Convex
   //    but touching contacts; "inside" by exact predicates, "apart" by a separating axis
   //    beyond the touch tolerance, the same certificate as step 2's.
   {
-    T tol = T(0);
-    if constexpr (!ScalarTraits<T>::isExact)
-      tol = options.touchTolerance >= T(0)
-                ? options.touchTolerance
-                : T(defaults::kMddTouchToleranceFactor) * ScalarTraits<T>::epsilon() * F.sceneSize();
+    const T tol = detail::touchToleranceOf(F, options);
     const detail::ExitPortal<T> portal = detail::exitPortal(F, x0, towards, cache.vertexP, cache.vertexQ, &tol);
     if (portal.verdict == detail::ExitPortal<T>::Verdict::Inside) return true;
     if (portal.verdict == detail::ExitPortal<T>::Verdict::Outside) return false;

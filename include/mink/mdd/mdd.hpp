@@ -13,7 +13,8 @@
 //      of faces with one normal, section VI-C); if not, every FV, VF and EE face is
 //      examined (never seen on the paper's shapes; counted in MddResult::usedFallback).
 //   4. If the origin is inside M, the other direction is searched too (d_min, section
-//      III-C) and the nearer exit is reported.
+//      III-C) and the nearer exit is reported — unless the first exit is nearer than c:
+//      the other one lies beyond c.
 // The line parameter of a face is t = k / (N·s): all decisions are signs of polynomials
 // in the inputs, so with an exact rational T the result is exact.
 //
@@ -28,23 +29,21 @@
 #include "mink/mdd/detail/mdd_driver.hpp"
 
 namespace mink {
+namespace detail {
 
-/// Minimum directional distance between P (placed by poseP) and Q (placed by poseQ)
-/// along s (world frame, any non-zero length): see MddResult for the
-/// meaning, unit, frame and sign of every output. Throws InvalidInput for a zero or
-/// non-finite s, a non-finite / non-orthonormal pose or a NaN touchTolerance; never
-/// throws otherwise.
-/// `cache` (optional) carries frame coherence between queries of the same pair.
+/// mdd() with the input checked here; `bothExits` searches both exits of a penetrating
+/// line even where the first is provably the nearer (mddExact certifies both ends).
 template <class T>
-MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
-                 const Pose<T>& poseQ, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options = {}) {
+MddResult<T> mddQuery(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                      const Pose<T>& poseQ, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options,
+                      bool bothExits) {
   for (int i = 0; i < 3; ++i)
     if (!ScalarTraits<T>::isFinite(s[i])) throw InvalidInput("mdd: direction s is not finite");
   if (s == Vec3<T>::Zero()) throw InvalidInput("mdd: direction s is zero");
   if (!(options.touchTolerance == options.touchTolerance))
     throw InvalidInput("mdd: options.touchTolerance is NaN (use a negative value for automatic)");
   if constexpr (ScalarTraits<T>::isExact) {
-    return detail::MddDriver<T>(P, poseP, Q, poseQ, s, cache, options).run();
+    return MddDriver<T>(P, poseP, Q, poseQ, s, cache, options, bothExits).run();
   } else {
     // Any non-zero length of s is allowed: scale it by a power of two (exact) to unit
     // order, so that |s|^2 and the products with s neither overflow nor underflow, and
@@ -60,12 +59,26 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
     // (MddResult::directionRounded says so).
     bool rounded = false;
     for (int i = 0; i < 3; ++i)
-      if (su[i] != T(0) && detail::absValue(su[i]) < ScalarTraits<T>::epsilon()) su[i] = T(0), rounded = true;
-    MddResult<T> r = detail::MddDriver<T>(P, poseP, Q, poseQ, su, cache, options).run();
+      if (su[i] != T(0) && absValue(su[i]) < ScalarTraits<T>::epsilon()) su[i] = T(0), rounded = true;
+    MddResult<T> r = MddDriver<T>(P, poseP, Q, poseQ, su, cache, options, bothExits).run();
     r.parameter = ldexp(r.parameter, -e);
     r.directionRounded = rounded;
     return r;
   }
+}
+
+}  // namespace detail
+
+/// Minimum directional distance between P (placed by poseP) and Q (placed by poseQ)
+/// along s (world frame, any non-zero length): see MddResult for the
+/// meaning, unit, frame and sign of every output. Throws InvalidInput for a zero or
+/// non-finite s, a non-finite / non-orthonormal pose or a NaN touchTolerance; never
+/// throws otherwise.
+/// `cache` (optional) carries frame coherence between queries of the same pair.
+template <class T>
+MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                 const Pose<T>& poseQ, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options = {}) {
+  return detail::mddQuery(P, poseP, Q, poseQ, s, cache, options, false);
 }
 
 /// mdd() without a coherence cache (allocates its small work buffers per call).

@@ -261,7 +261,8 @@ ExactMdd<E> mddExact(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const C
   static_assert(std::is_constructible<E, T>::value, "mddExact: E must be constructible from the shapes' scalar");
   using F = detail::FilterOf<T>;
   MddCache<T> cache;
-  const MddResult<T> r = mdd(P, poseP, Q, poseQ, s, cache, options);  // checks the input
+  // Checks the input; both exits of a penetrating line, for the chord's certificate.
+  const MddResult<T> r = detail::mddQuery(P, poseP, Q, poseQ, s, cache, options, true);
   if (P.isExactHull() && Q.isExactHull()) {
     if (r.status == MddStatus::NoContact && r.featureP >= 0 && r.featureQ >= 0) {
       detail::Verdict v = detail::Verdict::Unknown;

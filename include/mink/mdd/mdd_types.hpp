@@ -346,7 +346,9 @@ struct MddCache {
   int faceP = -1;    ///< seed face of P for SEARCH-FV
   int vertexP = -1;  ///< last support vertex of P
   int vertexQ = -1;  ///< last support vertex of Q
-  /// The last exit faces found (the two ends of the line for a penetrating query).
+  /// The last exit faces found on each side of the line: [0] the exit along +s, [1] along
+  /// −s (a penetrating query whose first exit is nearer than the centre of duality
+  /// updates only that side).
   MddCachedFace exitFaces[2];
   const void* shapeP = nullptr;  ///< identity of the shapes the hints belong to
   const void* shapeQ = nullptr;

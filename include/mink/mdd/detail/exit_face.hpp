@@ -31,7 +31,7 @@ class ExitFaceSearch {
  public:
   ExitFaceSearch(const PairFrame<T>& F, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& opt,
                  MddResult<T>& res)
-      : F_(F), cache_(cache), res_(res), check_(F, s, cache, opt) {
+      : F_(F), s_(s), cache_(cache), res_(res), check_(F, s, cache, opt) {
     const ConvexPolyhedron<T>& P = F.P();
     const ConvexPolyhedron<T>& Q = F.Q();
     const long long faces = P.numFaces() + Q.numFaces() + 64;
@@ -75,8 +75,9 @@ class ExitFaceSearch {
       // 1. A face kept from the last query, on this side of the line: when the pair moved
       //    a little, the exit face is it or one of its neighbours.
       ExitPortal<T> est;
-      for (const MddCachedFace& cf : cache_.exitFaces) {
-        const MFace<T> m = rebuild(cf);
+      const int side = sigma.dot(s_) > T(0) ? 0 : 1;  // the kept face on this side first
+      for (int i = 0; i < 2; ++i) {
+        const MFace<T> m = rebuild(cache_.exitFaces[i == 0 ? side : 1 - side]);
         if (!m.valid() || !(obj.num(m) > T(0))) continue;
         est.normal = m.N;
         est.vertexP = m.type == MddFaceType::FV ? P.faceVertices(m.a)[0]
@@ -331,17 +332,18 @@ class ExitFaceSearch {
     const T a = d1 * d1 * l2, b = d2 * d2 * l1;
     return d1 >= T(0) ? a > b : a < b;
   }
-  /// Keeps the last two exit faces in the cache (a penetrating query has two), to be
-  /// certified first by the next query of the pair; `path` found f (the result keeps the
-  /// costliest path of its exits).
+  /// Keeps the exit face in the cache by its side of the line (MddCache::exitFaces: [0]
+  /// the exit along +s, [1] along −s; a penetrating query has both), to be certified
+  /// first by the next query of the pair; `path` found f (the result keeps the costliest
+  /// path of its exits).
   const MFace<T>& remember(const MFace<T>& f, MddPath path) {
     if (static_cast<int>(path) > static_cast<int>(res_.path)) res_.path = path;
-    cache_.exitFaces[1] = cache_.exitFaces[0];
-    cache_.exitFaces[0] = MddCachedFace{f.type, f.a, f.b};
+    cache_.exitFaces[f.N.dot(s_) > T(0) ? 0 : 1] = MddCachedFace{f.type, f.a, f.b};
     return f;
   }
 
   const PairFrame<T>& F_;
+  const Vec3<T> s_;  // the line's direction (P's frame)
   MddCache<T>& cache_;
   MddResult<T>& res_;
   FacetCheck<T> check_;

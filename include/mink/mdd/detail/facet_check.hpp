@@ -25,6 +25,28 @@
 namespace mink {
 namespace detail {
 
+/// The automatic touch tolerance of a pair, a length in P's frame: the rounding slack of
+/// M's faces, defaults::kMddTouchToleranceFactor · eps · the scene's size (0 for exact T).
+template <class T>
+T automaticTouchTolerance(const PairFrame<T>& F) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    return T(0);
+  } else {
+    return T(defaults::kMddTouchToleranceFactor) * ScalarTraits<T>::epsilon() * F.sceneSize();
+  }
+}
+
+/// What counts as touching for a query: MddOptions::touchTolerance where the caller set
+/// it (non-negative), else the automatic one; 0 for exact T.
+template <class T>
+T touchToleranceOf(const PairFrame<T>& F, const MddOptions<T>& opt) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    return T(0);
+  } else {
+    return opt.touchTolerance >= T(0) ? opt.touchTolerance : automaticTouchTolerance(F);
+  }
+}
+
 template <class T>
 class FacetCheck {
  public:
@@ -34,13 +56,12 @@ class FacetCheck {
     if constexpr (ScalarTraits<T>::isExact) {
       tol_ = numTol_ = T(0);
     } else {
-      const T scene = F.sceneSize();
       // numTol_: the rounding slack of the facet checks, always automatic; tol_: what
       // counts as touching, the caller's choice (a large touchTolerance must not make
       // the facet checks accept faces the line misses).
-      numTol_ = T(defaults::kMddTouchToleranceFactor) * ScalarTraits<T>::epsilon() * scene;
-      tol_ = opt.touchTolerance >= T(0) ? opt.touchTolerance : numTol_;
-      scene_ = scene;
+      numTol_ = automaticTouchTolerance(F);
+      tol_ = touchToleranceOf(F, opt);
+      scene_ = F.sceneSize();
       sLength_ = s.norm();
     }
     const auto b = orthogonalBasis(s);

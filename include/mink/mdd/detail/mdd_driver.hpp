@@ -4,7 +4,8 @@
 //   2. the centre of duality (section IV-A, detail/centre_of_duality.hpp): the line misses
 //      M (noContact), grazes it (fromGrazing), or c strictly inside M is found;
 //   3. fromInterior(): the exit face towards the origin first (detail/exit_face.hpp); if
-//      the origin is inside M, the other exit too, and the nearer one (section III-C);
+//      the origin is inside M, the other exit too, and the nearer one (section III-C),
+//      unless the first is nearer than c, which the other exit is beyond;
 //   4. fromChord(): the last resort when no search can answer (detail/mdd_fallbacks.hpp);
 //   5. finish(): status, distance, translation and witnesses of the exit face.
 // Everything runs in P's frame (PairFrame); results are reported in the world frame.
@@ -26,7 +27,7 @@ template <class T>
 class MddDriver {
  public:
   MddDriver(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q, const Pose<T>& poseQ,
-            const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options)
+            const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options, bool bothExits = false)
       : P_(P),
         Q_(Q),
         poseP_(poseP),
@@ -41,7 +42,9 @@ class MddDriver {
         search_(F_, sl_, cache, options, res_),
         check_(search_.check()),
         fallbacks_(search_, cache, F_),
-        slen_(lengthOf(s)) {}
+        slen_(lengthOf(s)),
+        bothExits_(bothExits || cache.exitFaces[0].type != MddFaceType::None ||
+                   cache.exitFaces[1].type != MddFaceType::None) {}
 
   MddResult<T> run() {
     if (cached()) return res_;
@@ -86,24 +89,28 @@ class MddDriver {
       res_.status = MddStatus::Separated;
       return finish(t1);
     }
-    // Penetrating (or touching): the exit the other way, then the nearer one (d_min).
+    // Penetrating (or touching). The exit the other way is beyond c (c is strictly inside
+    // M), at |t2| > |α|: where |t1| < |α|, f1 is the nearer exit and the second search is
+    // not needed (for inexact T, by more than the facet check's slack, so that rounding
+    // in t1 cannot swap the two or their tie). Only for a pair with no kept faces (a
+    // one-off query): a pair queried again keeps both ends, which lets the next query of
+    // a resting or slowly moving contact be answered by cached().
+    if (!bothExits_ && firstIsNearer(t1, alphaNum)) {
+      res_.status = MddStatus::Penetrating;
+      if constexpr (!ScalarTraits<T>::isExact) {
+        if (touchesToRounding(f1)) return finish(T(0));
+      }
+      return finish(t1);
+    }
+    // Else the exit the other way, then the nearer one (d_min).
     const MFace<T> f2 = search_.exitFace(Vec3<T>(-first), c);
     if (!f2.valid()) return fromChord();
     if (check_.lineInPlane(f2)) return fromGrazing(f2.N);
     const T t2 = f2.k / f2.N.dot(sl_);
     res_.status = MddStatus::Penetrating;
     if constexpr (!ScalarTraits<T>::isExact) {
-      // The origin, inside M, within the rounding slack of the supporting plane of an exit
-      // face that the line meets at a grazing angle: it is that close to M's boundary, so P
-      // and Q touch to rounding. Said so (0), rather than through that face's k / (N·s),
-      // rounding over a tiny N·s (a 6e59 scene: 1.9e56 where the other exit was 2e-11).
-      // A face met at a larger angle gives an accurate k / (N·s) itself.
-      for (const MFace<T>* f : {&f1, &f2}) {
-        if (check_.wellConditioned(*f) || !(absValue(f->k) <= check_.slack() * f->N.norm())) continue;
-        if (!check_.facetHit(*f)) check_.faceHit(*f);  // its support sets and witnesses
-        record(*f);
-        return finish(T(0));
-      }
+      for (const MFace<T>* f : {&f1, &f2})
+        if (touchesToRounding(*f)) return finish(T(0));
     }
     // Tie: the exit along +s is reported.
     const bool takeSecond = absValue(t2) < absValue(t1) ||
@@ -130,6 +137,30 @@ class MddDriver {
       res_.distance = res_.translation = res_.parameter = std::numeric_limits<T>::infinity();
     }
     return res_;
+  }
+
+  /// |t1| < |α| for the exit t1 = f1.k / (f1.N·s) and the centre c = α s (alphaNum = c·s):
+  /// exactly for exact T; for inexact T by more than the facet check's slack along s.
+  bool firstIsNearer(const T& t1, const T& alphaNum) const {
+    const T ss = sl_.squaredNorm();
+    if constexpr (ScalarTraits<T>::isExact) {
+      return absValue(t1) * ss < absValue(alphaNum);
+    } else {
+      const T alpha = alphaNum / ss;
+      return (absValue(alpha) - absValue(t1)) * std::sqrt(ss) > check_.slack();
+    }
+  }
+
+  /// The origin, inside M, within the rounding slack of the supporting plane of an exit
+  /// face f that the line meets at a grazing angle: it is that close to M's boundary, so
+  /// P and Q touch to rounding; f is recorded and true returned. Said so (0), rather than
+  /// through that face's k / (N·s), rounding over a tiny N·s (a 6e59 scene: 1.9e56 where
+  /// the other exit was 2e-11). A face met at a larger angle gives an accurate k / (N·s).
+  bool touchesToRounding(const MFace<T>& f) {
+    if (check_.wellConditioned(f) || !(absValue(f.k) <= check_.slack() * f.N.norm())) return false;
+    if (!check_.facetHit(f)) check_.faceHit(f);  // its support sets and witnesses
+    record(f);
+    return true;
   }
 
   /// No answer within the caps: IterationLimit, with NaN distance, translation and
@@ -222,22 +253,48 @@ class MddDriver {
 
   /// Frame coherence: if the faces that ended the last query still bound the line (each
   /// a supporting plane of M whose facet the line crosses), they give the answer (true).
+  /// A kept face that alone puts the line's stretch in M on one side of the origin (the
+  /// −s exit ahead, t > 0, or the +s exit behind, t < 0) answers a separated query by
+  /// itself: it is certified first, and the other face only where it does not.
   bool cached() {
+    MFace<T> kept[2];
+    T tk[2] = {T(0), T(0)};
+    int order[2] = {0, 1};
+    for (int i = 0; i < 2; ++i) {
+      kept[i] = search_.rebuild(cache_.exitFaces[i]);
+      if (!kept[i].valid()) continue;
+      const T ns = kept[i].N.dot(sl_);
+      if (ns == T(0)) {
+        kept[i] = MFace<T>();
+        continue;
+      }
+      tk[i] = kept[i].k / ns;
+    }
+    auto separates = [&](int i) {
+      if (!kept[i].valid()) return false;
+      const bool isHi = kept[i].N.dot(sl_) > T(0);
+      return isHi ? tk[i] < T(0) : tk[i] > T(0);
+    };
+    if (!separates(0) && separates(1)) std::swap(order[0], order[1]);
     MFace<T> lo, hi;
     T tlo = T(0), thi = T(0);
-    for (const MddCachedFace& cf : cache_.exitFaces) {
-      const MFace<T> m = search_.rebuild(cf);
+    const MFace<T>* witnessed = nullptr;  // the face whose witnesses check_ holds
+    for (int i : order) {
+      const MFace<T>& m = kept[i];
       if (!m.valid()) continue;
-      const T ns = m.N.dot(sl_);
-      if (ns == T(0) || (ns > T(0) ? hi.valid() : lo.valid())) continue;
+      const bool isHi = m.N.dot(sl_) > T(0);
+      if (isHi ? hi.valid() : lo.valid()) continue;
       (m.type == MddFaceType::FV ? res_.visitedFV : m.type == MddFaceType::VF ? res_.visitedVF : res_.visitedEE) += 1;
+      witnessed = nullptr;
       if (!check_.certifies(m)) continue;
       if (check_.lineInPlane(m)) {
         lo = hi = MFace<T>();  // a grazing line: the cold path decides
         break;
       }
-      (ns > T(0) ? hi : lo) = m;
-      (ns > T(0) ? thi : tlo) = m.k / ns;
+      (isHi ? hi : lo) = m;
+      (isHi ? thi : tlo) = tk[i];
+      witnessed = isHi ? &hi : &lo;
+      if (separates(i)) break;  // the other end is not needed
     }
     const MFace<T>* answer = nullptr;
     if (lo.valid() && tlo > T(0)) {
@@ -251,7 +308,7 @@ class MddDriver {
       res_.status = MddStatus::Penetrating;
     }
     if (answer) {
-      check_.certifies(*answer);  // its witnesses
+      if (answer != witnessed) check_.certifies(*answer);  // its witnesses
       res_.faceType = answer->type;
       res_.featureP = answer->a;
       res_.featureQ = answer->b;
@@ -260,7 +317,7 @@ class MddDriver {
       res_.witnessQ = toWorld(check_.witnessQ());
       res_.fromCache = true;
       res_.path = MddPath::Cache;
-      finish(answer->k / answer->N.dot(sl_));
+      finish(answer == &lo ? tlo : thi);
       return true;
     }
     res_.visitedFV = res_.visitedVF = res_.visitedEE = 0;
@@ -362,6 +419,10 @@ class MddDriver {
   FacetCheck<T>& check_;
   MddFallbacks<T> fallbacks_;
   const T slen_;  // |s|, for reporting
+  // Search the second exit even where the first is provably the nearer one: mddExact
+  // certifies the chord of M from both ends; a pair with kept faces (a coherent caller)
+  // keeps both ends for cached().
+  const bool bothExits_;
 };
 
 }  // namespace detail
