@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -207,10 +208,23 @@ Overlap overlapping(unsigned seed) {
 TEST(MddPath, OneOffPenetratingQueryMatchesBothExits) {
   // A pair's first query stops at the exit towards the origin when it is nearer than the
   // centre of duality (the other exit lies beyond it); the paper's d_min over both exits
-  // (what mddExact runs) must give the same status, parameter and face.
+  // (what mddExact runs) must give the same status, parameter and face: on shallow
+  // overlaps of random hulls, and on the degenerate contacts and their twins.
+  std::vector<Overlap> scenes;
+  for (unsigned seed = 1; seed <= 5; ++seed) scenes.push_back(overlapping(seed));
+  for (const std::string& family : mink_test::degenerateFamilies()) {
+    for (bool generic : {false, true}) {
+      const mink_test::ContactScene sc = mink_test::degenerateScene(family, 12, generic);
+      Overlap o{mink::ConvexPolyhedron<double>::fromPoints(sc.P), mink::ConvexPolyhedron<double>::fromPoints(sc.Q),
+                {}, {}, sc.dirs};
+      o.poseQ.rotation = sc.rotQ;
+      o.poseQ.translation = sc.tQ;
+      scenes.push_back(std::move(o));
+    }
+  }
   int penetrating = 0, skipped = 0;
-  for (unsigned seed = 1; seed <= 5; ++seed) {
-    const Overlap o = overlapping(seed);
+  for (std::size_t seed = 0; seed < scenes.size(); ++seed) {
+    const Overlap& o = scenes[seed];
     for (const Eigen::Vector3d& s : o.dirs) {
       mink::MddCache<double> c1, c2;
       const auto one = mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s, c1);
@@ -220,8 +234,8 @@ TEST(MddPath, OneOffPenetratingQueryMatchesBothExits) {
       EXPECT_EQ(one.faceType, both.faceType) << seed;
       EXPECT_EQ(one.featureP, both.featureP) << seed;
       EXPECT_EQ(one.featureQ, both.featureQ) << seed;
-      EXPECT_LT((one.witnessP - one.witnessQ - one.parameter * s).norm(), 1e-9) << seed;
       if (one.status != MddStatus::Penetrating) continue;
+      EXPECT_LT((one.witnessP - one.witnessQ - one.parameter * s).norm(), 1e-9) << seed;
       ++penetrating;
       // Both exits were kept by the full query; one side only where the second was skipped.
       const int kept1 = (c1.exitFaces[0].type != mink::MddFaceType::None) +
@@ -240,22 +254,33 @@ TEST(MddPath, OneOffPenetratingQueryMatchesBothExits) {
       EXPECT_EQ(c1.exitFaces[side].b, one.featureQ) << seed;
     }
   }
+  std::printf("[mdd one-off] %d penetrating queries, %d stopped at the nearer exit\n", penetrating, skipped);
   EXPECT_GT(penetrating, 50);
   EXPECT_GT(skipped, 10);
   EXPECT_LT(skipped, penetrating);
 }
 
 TEST(MddPath, RepeatedPenetratingQueryIsAnsweredByTheCache) {
-  // The first query of a pair may keep one end of the chord; the second keeps both, and
-  // from then on a resting contact is answered by the cache.
+  // The first query of a pair may keep one end of the chord; the second then searches
+  // and keeps both, and from then on a resting contact is answered by the cache.
   const Overlap o = overlapping(7);
-  int cachedAnswers = 0;
+  int cachedAnswers = 0, oneEndFirst = 0;
+  auto kept = [](const mink::MddCache<double>& c) {
+    return (c.exitFaces[0].type != mink::MddFaceType::None) + (c.exitFaces[1].type != mink::MddFaceType::None);
+  };
   for (const Eigen::Vector3d& s : o.dirs) {
     mink::MddCache<double> cache;
     const auto first = mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s, cache);
     if (first.status != MddStatus::Penetrating) continue;
     EXPECT_FALSE(first.fromCache);
-    mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s, cache);
+    const int keptFirst = kept(cache);
+    const auto second = mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s, cache);
+    if (keptFirst == 1) {
+      ++oneEndFirst;
+      EXPECT_FALSE(second.fromCache);
+    }
+    EXPECT_EQ(kept(cache), 2);
+    EXPECT_EQ(second.parameter, first.parameter);
     const auto third = mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s, cache);
     EXPECT_TRUE(third.fromCache);
     EXPECT_EQ(third.status, MddStatus::Penetrating);
@@ -263,4 +288,5 @@ TEST(MddPath, RepeatedPenetratingQueryIsAnsweredByTheCache) {
     cachedAnswers += third.fromCache;
   }
   EXPECT_GT(cachedAnswers, 10);
+  EXPECT_GT(oneEndFirst, 0);
 }

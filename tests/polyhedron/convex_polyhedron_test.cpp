@@ -1483,4 +1483,39 @@ TYPED_TEST(Support, RotatedBoxAndIcosahedron) {
   }
 }
 
+
+// interiorDepth(): a ball of that radius around interiorPoint() lies inside the hull, and
+// the bound is tight to rounding. Reference: the distance of interiorPoint() to each face
+// plane through three of the face's vertices, in exact rationals (compared squared).
+TEST(InteriorDepth, BallInsideTheHullAndTight) {
+  std::mt19937 rng(20261205u);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Vec3<double>> pts;
+    const double sx = trial % 4 == 3 ? 1e-3 : 1.0;  // some flat ones
+    for (int i = 0; i < 30; ++i) pts.emplace_back(3.0 * g(rng), g(rng), sx * g(rng));
+    const auto P = ConvexPolyhedron<double>::fromPoints(pts);
+    const double depth = P.interiorDepth();
+    const Vec3<Q> c = toQ3(P.interiorPoint());
+    Q nearest2(-1);  // squared distance to the nearest face plane
+    for (int f = 0; f < P.numFaces(); ++f) {
+      const auto& L = P.faceVertices(f);
+      const Vec3<Q> a = toQ3(P.vertex(L[0])), b = toQ3(P.vertex(L[1])), d = toQ3(P.vertex(L[2]));
+      const Vec3<Q> n = (b - a).cross(d - a);
+      const Q h = n.dot(a - c);  // > 0: c below the plane
+      ASSERT_GT(h, Q(0)) << "trial " << trial << " face " << f;
+      const Q d2 = h * h / n.squaredNorm();
+      if (nearest2 < Q(0) || d2 < nearest2) nearest2 = d2;
+    }
+    ASSERT_GT(depth, 0.0) << "trial " << trial;
+    EXPECT_LE(Q(depth) * Q(depth), nearest2) << "trial " << trial;
+    const double nearest = std::sqrt(CGAL::to_double(nearest2));
+    EXPECT_GT(depth, nearest * (1 - 1e-9)) << "trial " << trial << " " << depth << " " << nearest;
+  }
+  // Exact-scalar shapes do not compute it.
+  std::vector<Vec3<Q>> cube;
+  for (int i = 0; i < 8; ++i) cube.emplace_back(Q(i & 1), Q((i >> 1) & 1), Q((i >> 2) & 1));
+  EXPECT_EQ(ConvexPolyhedron<Q>::fromPoints(cube).interiorDepth(), Q(0));
+}
+
 }  // namespace mink_test

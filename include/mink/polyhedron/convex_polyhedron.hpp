@@ -191,6 +191,10 @@ class ConvexPolyhedron {
   /// The average of the vertices: a point strictly inside the polyhedron (exact for
   /// exact T), made once at construction so queries never pay O(n) for one.
   const Vec3<T>& interiorPoint() const { return interior_; }
+  /// A lower bound on the radius of a ball around interiorPoint() inside the shape (the
+  /// hull of its vertices), in length units: the nearest face plane's distance less the
+  /// shape's tolerance and the rounding of the planes; 0 for exact T (not computed).
+  const T& interiorDepth() const { return interiorDepth_; }
   /// True when the shape is exactly the convex hull of its vertices, as numbers of T:
   /// always for fromPoints (an exact hull), and for fromMesh with exact T (validated
   /// without slack). A fromMesh shape in floating point is convex within its tolerance
@@ -269,6 +273,7 @@ class ConvexPolyhedron {
   T tolerance_ = T(0);
   T extent_ = T(0);
   Vec3<T> interior_ = Vec3<T>::Zero();
+  T interiorDepth_ = T(0);
   bool edgesResolved_ = true;
   bool exactHull_ = false;
   std::shared_ptr<detail::DerivedSlots> derived_;

@@ -36,6 +36,11 @@ struct CentreOfDuality {
   Kind kind = Kind::Outside;
   /// Interior: a point of the line, strictly inside M (frame of P).
   Vec3<T> c = Vec3<T>::Zero();
+  /// Interior: the weight of the interior point x0 = interiorPoint(P) − interiorPoint(Q)
+  /// in c, a convex combination of x0 and points of M (1: c = x0; 1 − λ on a segment;
+  /// 1 − l1 − l2 in a triangle); negative where the computed weights are not all ≥ 0.
+  /// With the shapes' interiorDepth(), it bounds how deep c lies inside M.
+  T weightX0 = T(-1);
   /// Boundary: a direction orthogonal to s whose supporting plane of M contains the line.
   /// Outside: a direction orthogonal to s along which M's support is below 0 (the line
   /// is strictly beyond that supporting plane); the hints are then M's support there.
@@ -105,6 +110,7 @@ CentreOfDuality<T> centreOfDuality(const PairFrame<T>& F, const Vec3<T>& s, int&
   if (v0 == zero) {
     out.kind = Kind::Interior;
     out.c = x0;
+    out.weightX0 = T(1);
     return out;
   }
   const Pt2<T> r(-v0.first, -v0.second);  // from v0 towards the origin
@@ -123,6 +129,7 @@ CentreOfDuality<T> centreOfDuality(const PairFrame<T>& F, const Vec3<T>& s, int&
     const T lambda = dot2(r, r) / dot2(r, d01);
     out.kind = Kind::Interior;
     out.c = x0 + lambda * (X1 - x0);
+    if (lambda >= T(0) && lambda <= T(1)) out.weightX0 = T(1) - lambda;
     return out;
   }
   // Second support point on the origin's side of line v0 v1; keep (v1, v2) counter-
@@ -185,6 +192,7 @@ CentreOfDuality<T> centreOfDuality(const PairFrame<T>& F, const Vec3<T>& s, int&
       const T l2 = cross2(sub2(v1, v0), sub2(zero, v0)) / A;
       out.kind = Kind::Interior;
       out.c = (T(1) - l1 - l2) * x0 + l1 * X1 + l2 * X2;
+      if (l1 >= T(0) && l2 >= T(0) && T(1) - l1 - l2 >= T(0)) out.weightX0 = T(1) - l1 - l2;
       return out;
     }
     const Vec3<T> X3 = support(np);

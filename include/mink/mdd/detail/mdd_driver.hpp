@@ -67,13 +67,14 @@ class MddDriver {
     }
     if (cd.kind == Kind::Limit) return fromChord();
     if (cd.kind == Kind::Boundary) return fromGrazing(cd.w);
-    return fromInterior(cd.c);
+    return fromInterior(cd);
   }
 
   /// c = α s strictly inside M: the exit towards the origin first (it decides separated:
   /// the exit is the answer), then, the origin inside M, the exit the other way and the
   /// nearer of the two (d_min, section III-C).
-  MddResult<T> fromInterior(const Vec3<T>& c) {
+  MddResult<T> fromInterior(const CentreOfDuality<T>& cd) {
+    const Vec3<T>& c = cd.c;
     const T alphaNum = c.dot(sl_);  // sign of alpha
     // Towards the origin first: it decides separated (the exit is the answer) or not.
     const Vec3<T> first = alphaNum > T(0) ? Vec3<T>(-sl_) : Vec3<T>(sl_);
@@ -95,7 +96,7 @@ class MddDriver {
     // in t1 cannot swap the two or their tie). Only for a pair with no kept faces (a
     // one-off query): a pair queried again keeps both ends, which lets the next query of
     // a resting or slowly moving contact be answered by cached().
-    if (!bothExits_ && firstIsNearer(t1, alphaNum)) {
+    if (!bothExits_ && firstIsNearer(t1, alphaNum) && centreIsDeep(cd, alphaNum)) {
       res_.status = MddStatus::Penetrating;
       if constexpr (!ScalarTraits<T>::isExact) {
         if (touchesToRounding(f1)) return finish(T(0));
@@ -148,6 +149,28 @@ class MddDriver {
     } else {
       const T alpha = alphaNum / ss;
       return (absValue(alpha) - absValue(t1)) * std::sqrt(ss) > check_.slack();
+    }
+  }
+
+  /// Is the line's point at c's parameter α inside M, so that the exit beyond c is at
+  /// |t2| ≥ |α|? Exact T: c is (exactly on the line and strictly inside M). Inexact T: c
+  /// is computed as a convex combination of points of M with weight w0 on x0, around
+  /// which a ball of radius D = interiorDepth(P) + interiorDepth(Q) lies in M; so a ball
+  /// of radius w0·D around that exact combination does, and the line's point α s is
+  /// within |c − α s| (c's distance to the line) plus the rounding of c of it. The
+  /// rounding is bounded by the facet check's slack. A centre lifted near M's boundary
+  /// (w0 tiny: c close to the facet through the support points) is no proof: the exit
+  /// beyond it may be nearer than α by the rounding of c over the sine at which the line
+  /// meets that facet.
+  bool centreIsDeep(const CentreOfDuality<T>& cd, const T& alphaNum) const {
+    if constexpr (ScalarTraits<T>::isExact) {
+      return true;
+    } else {
+      if (!(cd.weightX0 > T(0))) return false;
+      const T depth = P_.interiorDepth() + Q_.interiorDepth();
+      // |offLine| ≤ 2 max |component| (no underflow in a scene of 1e-224).
+      const Vec3<T> offLine = cd.c - (alphaNum / sl_.squaredNorm()) * sl_;
+      return cd.weightX0 * depth > T(2) * offLine.cwiseAbs().maxCoeff() + T(2) * check_.slack();
     }
   }
 

@@ -30,6 +30,7 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
   using F::checkFinite;
   using F::extentOf;
   using F::facePlanes;
+  using F::interiorDepth;
   using F::finish;
   using F::key;
   using F::newell;
@@ -82,6 +83,7 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
         facePlanes(P);
         P.tolerance_ = std::ldexp(P.tolerance_, e);
         P.extent_ = std::ldexp(P.extent_, e);
+        interiorDepth(P);
         return P;
       }
     }

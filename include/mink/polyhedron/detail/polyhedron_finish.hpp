@@ -5,7 +5,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -284,7 +286,22 @@ struct PolyhedronFinish : PolyhedronGeometry<T> {
     facePlanes(P);
     P.tolerance_ = tol;
     P.extent_ = extent;
+    interiorDepth(P);
     return P;
+  }
+
+  /// ConvexPolyhedron::interiorDepth (inexact T; after the planes, tolerance and extent):
+  /// the interior point's distance to the nearest face plane, less what the planes may
+  /// be off the hull of the vertices: the shape's tolerance (a fromMesh face is planar
+  /// within it) and their rounding. The normals are unit vectors, to rounding.
+  static void interiorDepth(Poly& P) {
+    if constexpr (!ScalarTraits<T>::isExact) {
+      T depth = std::numeric_limits<T>::infinity();
+      for (int f = 0; f < P.numFaces(); ++f)
+        depth = std::min(depth, T(P.faceOffset_[f] - P.faceNormal_[f].dot(P.interior_)));
+      depth -= P.tolerance_ + T(16) * ScalarTraits<T>::epsilon() * P.extent_;
+      P.interiorDepth_ = depth > T(0) ? depth : T(0);
+    }
   }
 
   /// Face normals and offsets, and the interior point, from the vertices.
