@@ -29,6 +29,7 @@
 #include <Eigen/Geometry>
 #include <CGAL/Gmpz.h>
 
+#include "mink/core/detail/spatial_order.hpp"
 #include "mink/polyhedron/convex_polyhedron.hpp"
 #include "support/to_rational.hpp"
 
@@ -1516,6 +1517,65 @@ TEST(InteriorDepth, BallInsideTheHullAndTight) {
   std::vector<Vec3<Q>> cube;
   for (int i = 0; i < 8; ++i) cube.emplace_back(Q(i & 1), Q((i >> 1) & 1), Q((i >> 2) & 1));
   EXPECT_EQ(ConvexPolyhedron<Q>::fromPoints(cube).interiorDepth(), Q(0));
+}
+
+
+// Shapes of at least defaults::kSpatialOrderMinVertices vertices number their vertices and
+// faces in Morton order (core/detail/spatial_order.hpp), from fromPoints and fromMesh
+// alike; the structure stays valid and inputIndex still names each vertex's input point.
+template <class T>
+void expectMortonOrdered(const ConvexPolyhedron<T>& P, const std::string& context) {
+  expectValidPolyhedron(P, context);
+  std::vector<int> identity(P.numVertices());
+  for (int v = 0; v < P.numVertices(); ++v) identity[v] = v;
+  EXPECT_TRUE(mink::detail::mortonOrder(P.vertices()) == identity) << context << ": vertices";
+  std::vector<Vec3<T>> centroids;
+  for (int f = 0; f < P.numFaces(); ++f) {
+    Vec3<T> c = Vec3<T>::Zero();
+    for (int v : P.faceVertices(f)) c += P.vertex(v);
+    centroids.push_back(c / T(P.faceSize(f)));
+  }
+  identity.resize(P.numFaces());
+  for (int f = 0; f < P.numFaces(); ++f) identity[f] = f;
+  EXPECT_TRUE(mink::detail::mortonOrder(centroids) == identity) << context << ": faces";
+}
+
+template <class T>
+class SpatialOrder : public ::testing::Test {};
+using SpatialOrderScalars = ::testing::Types<double, Q>;
+TYPED_TEST_SUITE(SpatialOrder, SpatialOrderScalars, ScalarNames);
+
+TYPED_TEST(SpatialOrder, LargeShapesNumberVerticesAndFacesInMortonOrder) {
+  using T = TypeParam;
+  std::mt19937 rng(7011u);
+  std::normal_distribution<double> g(0.0, 1.0);
+  const int n = mink::defaults::kSpatialOrderMinVertices + 100;
+  std::vector<Vec3<T>> pts;
+  while (static_cast<int>(pts.size()) < n) {  // an ellipsoid: every point a hull vertex
+    const double x = g(rng), y = g(rng), z = g(rng), r = std::sqrt(x * x + y * y + z * z);
+    if (r > 0) pts.push_back(P3<T>(2 * x / r, 2 * y / r, 5 * z / r));
+  }
+  const auto P = ConvexPolyhedron<T>::fromPoints(pts);
+  ASSERT_EQ(P.numVertices(), n);
+  expectMortonOrdered(P, "fromPoints");
+  for (int v = 0; v < n; ++v) ASSERT_TRUE(P.vertex(v) == pts[P.inputIndex(v)]) << "vertex " << v;
+  // The same surface as a mesh, vertices in reverse input order.
+  std::vector<Vec3<T>> verts(pts.rbegin(), pts.rend());
+  std::vector<std::vector<int>> faces;
+  for (int f = 0; f < P.numFaces(); ++f) {
+    faces.emplace_back();
+    for (int v : P.faceVertices(f)) faces.back().push_back(n - 1 - P.inputIndex(v));
+  }
+  const auto M = ConvexPolyhedron<T>::fromMesh(verts, faces);
+  ASSERT_EQ(M.numVertices(), n);
+  ASSERT_EQ(M.numFaces(), P.numFaces());
+  expectMortonOrdered(M, "fromMesh");
+  for (int v = 0; v < n; ++v) ASSERT_TRUE(M.vertex(v) == P.vertex(v)) << "vertex " << v;
+  // Support answers by value against the scan.
+  for (int k = 0; k < 200; ++k) {
+    const Vec3<T> d = randomDirection<T>(rng);
+    ASSERT_TRUE(d.dot(P.vertex(P.support(d))) == d.dot(P.vertex(P.supportBruteForce(d)))) << "direction " << k;
+  }
 }
 
 }  // namespace mink_test

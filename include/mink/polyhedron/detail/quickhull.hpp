@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "mink/core/error.hpp"
+#include "mink/core/detail/spatial_order.hpp"
 #include "mink/core/orientation.hpp"
 #include "mink/core/scalar_traits.hpp"
 #include "mink/core/types.hpp"
@@ -397,44 +398,17 @@ class Quickhull {
   /// memory that neighbours on the surface share, where face-slot order scatters it (at
   /// 100k points the builder's passes were bound by cache misses).
   std::vector<std::array<int, 3>> collect() const {
-    std::vector<std::pair<std::uint64_t, int>> keyed;
-    Vec3<T> lo = pts_[faces_[0].v[0]], hi = lo;
-    for (const Face& f : faces_)
-      if (f.alive) {
-        lo = lo.cwiseMin(pts_[f.v[0]]);
-        hi = hi.cwiseMax(pts_[f.v[0]]);
+    std::vector<int> alive;
+    std::vector<Vec3<T>> firsts;
+    for (int fi = 0; fi < static_cast<int>(faces_.size()); ++fi)
+      if (faces_[fi].alive) {
+        alive.push_back(fi);
+        firsts.push_back(pts_[faces_[fi].v[0]]);
       }
-    const Vec3<T> span = hi - lo;
-    for (int fi = 0; fi < static_cast<int>(faces_.size()); ++fi) {
-      const Face& f = faces_[fi];
-      if (!f.alive) continue;
-      std::uint64_t key = 0;
-      for (int k = 0; k < 3; ++k) {
-        // 21 bits per axis; only the order, not the value, matters (any rounding is fine).
-        const double w = toDouble(span[k]);
-        double x = w > 0.0 ? (toDouble(pts_[f.v[0]][k]) - toDouble(lo[k])) / w : 0.0;
-        if (!(x == x)) x = 0.0;
-        x = std::min(std::max(x, 0.0), 1.0);
-        key |= spreadBits(static_cast<std::uint64_t>(x * 2097151.0)) << k;
-      }
-      keyed.push_back({key, fi});
-    }
-    std::sort(keyed.begin(), keyed.end());
     std::vector<std::array<int, 3>> out;
-    out.reserve(keyed.size());
-    for (const auto& kf : keyed) out.push_back(faces_[kf.second].v);
+    out.reserve(alive.size());
+    for (int i : mortonOrder(firsts)) out.push_back(faces_[alive[i]].v);
     return out;
-  }
-
-  /// The 21 low bits of x spread to every third bit (bit i to bit 3i).
-  static std::uint64_t spreadBits(std::uint64_t x) {
-    x &= 0x1fffff;
-    x = (x | x << 32) & 0x1f00000000ffffULL;
-    x = (x | x << 16) & 0x1f0000ff0000ffULL;
-    x = (x | x << 8) & 0x100f00f00f00f00fULL;
-    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
-    x = (x | x << 2) & 0x1249249249249249ULL;
-    return x;
   }
 
   const std::vector<Vec3<T>>& pts_;
