@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "mink/mdd/detail/pair_frame.hpp"
@@ -25,14 +26,16 @@ void checkPose(const Pose<T>& pose, const char* name) {
       if (!ScalarTraits<T>::isFinite(pose.rotation(i, j)))
         throw InvalidInput(std::string("mdd: ") + name + ".rotation is not finite");
   }
-  const Mat3<T> E = pose.rotation.transpose() * pose.rotation - Mat3<T>::Identity();
+  // R^T R - I, symmetric: the six products of columns.
   T tol = T(0);
   if constexpr (!ScalarTraits<T>::isExact)
     tol = std::max(T(defaults::kRotationTolerance), T(100) * ScalarTraits<T>::epsilon());
+  const Mat3<T>& R = pose.rotation;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (absValue(E(i, j)) > tol)
-        throw InvalidInput(std::string("mdd: ") + name + ".rotation is not orthonormal");
+    for (int j = i; j < 3; ++j) {
+      const T e = R(0, i) * R(0, j) + R(1, i) * R(1, j) + R(2, i) * R(2, j) - (i == j ? T(1) : T(0));
+      if (absValue(e) > tol) throw InvalidInput(std::string("mdd: ") + name + ".rotation is not orthonormal");
+    }
   if (!(pose.rotation.determinant() > T(0)))
     throw InvalidInput(std::string("mdd: ") + name + ".rotation is a reflection (determinant < 0)");
 }
@@ -92,7 +95,13 @@ Vec3<T> unitOrExact(const Vec3<T>& n) {
   if constexpr (ScalarTraits<T>::isExact) {
     return n;
   } else {
-    const Vec3<T> m = unitOrder(n);
+    // Scaling by a power of two changes nothing in n / |n| unless |n|'s squares would
+    // leave the exponent range: skip it (an ilogb and three ldexp calls) for a vector of
+    // moderate size, the common case, and get the same bits.
+    const T big = n.cwiseAbs().maxCoeff();
+    constexpr int kSafe = std::numeric_limits<T>::max_exponent / 4;
+    const bool moderate = big >= std::ldexp(T(1), -kSafe) && big <= std::ldexp(T(1), kSafe);
+    const Vec3<T> m = moderate ? n : unitOrder(n);
     const T len = m.norm();
     return len > T(0) ? Vec3<T>(m / len) : m;
   }
