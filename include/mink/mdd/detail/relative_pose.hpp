@@ -97,7 +97,8 @@ Vec3<T> unitOrExact(const Vec3<T>& n) {
   } else {
     // Scaling by a power of two changes nothing in n / |n| unless |n|'s squares would
     // leave the exponent range: skip it (an ilogb and three ldexp calls) for a vector of
-    // moderate size, the common case, and get the same bits.
+    // moderate size, the common case, and get the same bits (but for a subnormal output
+    // component, which may differ by its last ulp: the unscaled quotient is the closer).
     const T big = n.cwiseAbs().maxCoeff();
     constexpr int kSafe = std::numeric_limits<T>::max_exponent / 4;
     const bool moderate = big >= std::ldexp(T(1), -kSafe) && big <= std::ldexp(T(1), kSafe);

@@ -85,7 +85,8 @@ struct PolyhedronFinish : PolyhedronGeometry<T> {
   /// Renumbers P's vertices (vertices_, inputIndex_ and newIndex, input -> vertex) in
   /// Morton order of their points and sorts `faces` by the Morton order of their
   /// centroids (core/detail/spatial_order.hpp): a walk over the surface then reads
-  /// neighbouring memory. Ids are the only thing that changes.
+  /// neighbouring memory. Ids change, and sums taken in id order (the interior point)
+  /// may change in their last bits; the geometry does not.
   static void spatialOrder(Poly& P, std::vector<Loop>& faces, std::vector<int>& newIndex) {
     const std::vector<int> order = mortonOrder(P.vertices_);  // new -> old vertex id
     std::vector<Vec3<T>> vertices(order.size());
