@@ -79,6 +79,7 @@ TEST(ContinuousPenetrationDepth, StatusNames) {
   EXPECT_STREQ(mink::toString(mink::CpdStatus::Separated), "Separated");
   EXPECT_STREQ(mink::toString(mink::CpdStatus::Penetrating), "Penetrating");
   EXPECT_STREQ(mink::toString(mink::CpdStatus::Approximate), "Approximate");
+  EXPECT_STREQ(mink::toString(mink::CpdStatus::InvalidInput), "InvalidInput");
   EXPECT_STREQ(mink::toString(static_cast<mink::CpdStatus>(7)), "?");
 }
 
@@ -488,6 +489,24 @@ TEST(ContinuousPenetrationDepth, BadPosesAndOptionsAreInvalidInput) {
   o = {};
   o.maxIterations = 0;
   mink_test::expectRejected([&] { mink::ContinuousPenetrationDepth<double>(A, B, o); }, "maxIterations", "no iteration");
+  // checkCpdInput / checkCpdOptions (what builds without exceptions report, with the
+  // status InvalidInput): the messages thrown.
+  auto thrown = [](auto&& call) {
+    try {
+      call();
+    } catch (const mink::InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string("(nothing thrown)");
+  };
+  const Pose nanB = pose(M3::Identity(), V(nan, 0, 0));
+  EXPECT_EQ(mink::checkCpdInput(I, nanB).message(), thrown([&] { cpd.query(I, nanB); }));
+  EXPECT_EQ(mink::checkCpdInput(I, pose(reflect, V::Zero()), "penetrationDepth").message(),
+            thrown([&] { mink::penetrationDepth(A, I, B, pose(reflect, V::Zero())); }));
+  EXPECT_EQ(mink::checkCpdOptions(o).message(), thrown([&] { mink::ContinuousPenetrationDepth<double>(A, B, o); }));
+  EXPECT_FALSE(mink::checkCpdInput(I, I));
+  EXPECT_FALSE(mink::checkCpdOptions(mink::CpdOptions<double>{}));
+  EXPECT_FALSE(cpd.error());
 }
 
 TEST(ContinuousPenetrationDepth, FloatAgreesWithDouble) {

@@ -20,6 +20,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -305,6 +306,37 @@ TEST(LocalMinkowskiSum, BadInputIsRejected) {
   mink::Pose<double> nanPose;
   nanPose.translation[2] = nan;
   mink_test::expectRejected([&] { local.update(p, nanPose, V(0, 0, 0), 1.0); }, "poseB", "NaN translation");
+  // tryUpdate, the entry point of builds without exceptions: each of these as an Error with
+  // the message update() throws; a good ball answered as update() answers it.
+  struct Case {
+    mink::Pose<double> a, b;
+    V centre;
+    double radius;
+  };
+  for (const Case& c : {Case{p, p, V(nan, 0, 0), 1.0}, Case{p, p, V(0, 0, 0), 0.0}, Case{skew, p, V(0, 0, 0), 1.0},
+                        Case{p, nanPose, V(0, 0, 0), 1.0}}) {
+    const auto r = local.tryUpdate(c.a, c.b, c.centre, c.radius);
+    ASSERT_FALSE(r.ok());
+    try {
+      local.update(c.a, c.b, c.centre, c.radius);
+      ADD_FAILURE() << "accepted";
+    } catch (const mink::InvalidInput& e) {
+      EXPECT_EQ(r.error().message(), std::string(e.what()));
+    }
+  }
+  // M is about [-1.5, 2.5] x [-1.25, 2.75] x [-1, 2]: the ball meets its faces z = -1 and
+  // y = -1.25.
+  mink::Pose<double> near;
+  near.translation = V(0.5, 0.25, 0);
+  const auto ok = local.tryUpdate(p, near, V(0, 0, 0), 1.5);
+  ASSERT_TRUE(ok.ok()) << ok.error().message();
+  EXPECT_EQ(ok.value(), &local.patch());
+  const std::vector<std::array<int, 3>> triangles = ok.value()->triangles;
+  const std::vector<V> vertices = ok.value()->vertices;
+  EXPECT_GT(triangles.size(), 0u);
+  const mink::MinkowskiPatch<double>& again = local.update(p, near, V(0, 0, 0), 1.5);
+  EXPECT_EQ(again.triangles, triangles);
+  EXPECT_EQ(again.vertices, vertices);
 }
 
 template <class T>

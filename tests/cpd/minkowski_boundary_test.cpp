@@ -27,7 +27,9 @@
 #include <Eigen/Geometry>
 
 #include <cstdio>
+#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/mesh_shapes.hpp"
@@ -137,7 +139,9 @@ TEST(MinkowskiBoundary, AgainstCgalMinkowskiSum) {
     EXPECT_NE(r.status, mink::CpdStatus::Separated);
     EXPECT_GE(r.depth, pd - 1e-9 * L);
     EXPECT_LT(ref.distance(r.point), 1e-9 * L) << "the CPD's q is off CGAL's boundary";
-    if (r.status == mink::CpdStatus::Penetrating) EXPECT_LE(r.normal.cross(r.point).norm(), 1e-9 * r.depth);
+    if (r.status == mink::CpdStatus::Penetrating) {
+      EXPECT_LE(r.normal.cross(r.point).norm(), 1e-9 * r.depth);
+    }
   }
 }
 
@@ -151,6 +155,36 @@ TEST(MinkowskiBoundary, OrientedOutward) {
   poseB.translation = c.t;
   const auto P = mink::minkowskiBoundary(A, poseA, B, poseB);
   EXPECT_GT(mink_test::measure(P).volume, 0.0);
+}
+
+// tryMinkowskiBoundary, the entry point of builds without exceptions: a pose that is not
+// rigid is an Error with the message minkowskiBoundary throws; a good one gives its patch.
+TEST(MinkowskiBoundary, TryMinkowskiBoundary) {
+  const Case c = cases()[1];
+  const auto A = mink::TriangleMesh<double>::fromMesh(c.a.verticesAs<double>(), c.a.triangles);
+  const auto B = mink::TriangleMesh<double>::fromMesh(c.b.verticesAs<double>(), c.b.triangles);
+  mink::Pose<double> poseA, poseB, nanPose, mirror;
+  poseB.rotation = c.R;
+  poseB.translation = c.t;
+  nanPose.translation[1] = std::numeric_limits<double>::quiet_NaN();
+  mirror.rotation(0, 0) = -1;
+  const std::pair<mink::Pose<double>, mink::Pose<double>> bad[] = {{nanPose, poseB}, {poseA, mirror}};
+  for (const auto& [pa, pb] : bad) {
+    const auto r = mink::tryMinkowskiBoundary(A, pa, B, pb);
+    ASSERT_FALSE(r.ok());
+    try {
+      (void)mink::minkowskiBoundary(A, pa, B, pb);
+      ADD_FAILURE() << "accepted";
+    } catch (const mink::InvalidInput& e) {
+      EXPECT_EQ(r.error().message(), std::string(e.what()));
+    }
+  }
+  const auto r = mink::tryMinkowskiBoundary(A, poseA, B, poseB);
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  const auto P = mink::minkowskiBoundary(A, poseA, B, poseB);
+  EXPECT_GT(P.triangles.size(), 0u);
+  EXPECT_EQ(r.value().triangles, P.triangles);
+  EXPECT_EQ(r.value().vertices, P.vertices);
 }
 
 TEST(MinkowskiBoundary, ExactRationalsLBlockAndBox) {

@@ -43,8 +43,11 @@ TEST(HierarchyHostile, BadOptionsNameTheOptionAndValue) {
       ADD_FAILURE() << "accepted";
     } catch (const mink::InvalidInput& e) {
       EXPECT_NE(std::string(e.what()).find(c.words), std::string::npos) << e.what();
+      // checkOptions (what a build without exceptions calls first) gives the same message.
+      EXPECT_EQ(mink::DKHierarchy<double>::checkOptions(o).message(), std::string(e.what()));
     }
   }
+  EXPECT_FALSE(mink::DKHierarchy<double>::checkOptions(mink::DKHierarchyOptions{}));
 }
 
 TEST(HierarchyHostile, NonFiniteAndZeroDirectionsTerminate) {

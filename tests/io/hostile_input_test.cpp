@@ -13,8 +13,10 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "io/io_test_support.hpp"
 #include "support/expect_rejected.hpp"
 
 namespace {
@@ -77,6 +79,45 @@ TEST(IoHostile, WritersNameTheBadVertexOrFace) {
     expectRejected([&] { write(v, {{0, -1, 2}}); }, w + ": face 0 has index -1 outside [0, 3)", w + " negative");
     expectRejected([&] { write(v, {{0, 1}}); }, w + ": face 0 has 2 indices (at least 3 needed)", w + " short face");
   }
+}
+
+// The non-throwing twins (the entry points of builds without exceptions) on the same input:
+// an Error with the very message thrown, and nothing written.
+TEST(IoHostile, TryTwinsReportWhatTheThrowingOnesThrow) {
+  const std::vector<V> v = {V(0, 0, 0), V(1, 0, 0), V(0, 1, 0)};
+  auto nanV = v;
+  nanV[1][2] = std::numeric_limits<double>::quiet_NaN();
+  using Faces = std::vector<std::vector<int>>;
+  const std::pair<std::vector<V>, Faces> bad[] = {{nanV, {{0, 1, 2}}}, {v, {{0, 1, 2}, {0, 1, 3}}},
+                                                  {v, {{0, -1, 2}}}, {v, {{0, 1}}}};
+  for (const auto& [verts, faces] : bad) {
+    std::ostringstream a, b, unused;
+    mink_io_test::expectSameError(mink::io::tryWriteObj(a, verts, faces),
+                                  [&] { mink::io::writeObj(unused, verts, faces); }, "writeObj");
+    mink_io_test::expectSameError(mink::io::tryWriteOff(b, verts, faces),
+                                  [&] { mink::io::writeOff(unused, verts, faces); }, "writeOff");
+    EXPECT_TRUE(a.str().empty() && b.str().empty());
+  }
+  const char* offTexts[] = {"", "OFF\n-3 1 0\n", "OFF\n4 1 0\n0 0 0\n", "OFF\n2000000000 2000000000 0\n",
+                            "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"};
+  for (const char* text : offTexts) {
+    std::istringstream in(text);
+    mink_io_test::expectSameError(
+        mink::io::tryReadOff<double>(in, "c.off"),
+        [&] {
+          std::istringstream again(text);
+          (void)mink::io::readOff<double>(again, "c.off");
+        },
+        text);
+  }
+  std::istringstream objIn("v 0 0 0\nv 0 -1e39 0\n");
+  mink_io_test::expectSameError(
+      mink::io::tryReadObj<float>(objIn, "f.obj"),
+      [] {
+        std::istringstream again("v 0 0 0\nv 0 -1e39 0\n");
+        (void)mink::io::readObj<float>(again, "f.obj");
+      },
+      "OBJ float overflow");
 }
 
 // Regression: a 30-byte OFF header announcing 2e9 vertices makes readOff reserve 48 GB up front

@@ -1,5 +1,6 @@
-// Shared by the io tests: a scratch directory per test, removed afterwards, and random
-// meshes with coordinates spread over many binades.
+// Shared by the io tests: a scratch directory per test, removed afterwards, random
+// meshes with coordinates spread over many binades, and the check that a try* twin
+// reports exactly what its throwing entry point throws.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -11,8 +12,10 @@
 #include <random>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
+#include "mink/core/error.hpp"
 #include "mink/core/types.hpp"
 
 namespace mink_io_test {
@@ -68,6 +71,33 @@ std::vector<mink::Vec3<T>> randomVertices(std::mt19937& rng, int n) {
     }
   }
   return v;
+}
+
+// The what() of the mink::InvalidInput that fn throws, or "(nothing thrown)".
+template <class Fn>
+std::string thrownMessage(Fn&& fn) {
+  try {
+    fn();
+  } catch (const mink::InvalidInput& e) {
+    return e.what();
+  }
+  return "(nothing thrown)";
+}
+
+// The Error of a try* twin (tryWriteObj, ...) must be set and read as the InvalidInput that
+// throwingCall throws for the same input.
+template <class Fn>
+void expectSameError(const mink::Error& error, Fn&& throwingCall, const std::string& context) {
+  SCOPED_TRACE(context);
+  EXPECT_TRUE(error) << "the try* twin accepted what the throwing call rejects";
+  EXPECT_EQ(error.message(), thrownMessage(throwingCall));
+}
+
+// The same for a Result (tryReadObj, ...): not ok(), with that Error.
+template <class V, class Fn>
+void expectSameError(const mink::Result<V>& result, Fn&& throwingCall, const std::string& context) {
+  EXPECT_FALSE(result.ok()) << context << ": the try* twin accepted what the throwing call rejects";
+  expectSameError(result.error(), std::forward<Fn>(throwingCall), context);
 }
 
 }  // namespace mink_io_test

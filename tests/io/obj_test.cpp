@@ -15,6 +15,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -181,7 +182,29 @@ TEST(ObjReader, MalformedInputNamesFileLineAndProblem) {
       EXPECT_NE(what.find("bad.obj:" + std::to_string(c.line) + ":"), std::string::npos) << what;
       EXPECT_NE(what.find(c.fragment), std::string::npos) << what;
     }
+    // The non-throwing twin: the same message as an Error.
+    std::istringstream again(prefix + c.text);
+    mink_io_test::expectSameError(
+        mink::io::tryReadObj<double>(again, "bad.obj"),
+        [&] {
+          std::istringstream in2(prefix + c.text);
+          (void)mink::io::readObj<double>(in2, "bad.obj");
+        },
+        c.text);
   }
+}
+
+TEST(ObjReader, TryReadObjAnswersGoodInputAsReadObj) {
+  const std::string text =
+      "v 0 0 0\nv 1 0 0 # x\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nf 1 3 2\nf 1/1 2/2 4/4\nf 2//1 3//1 4//1\nf -4 -1 -2\n";
+  std::istringstream a(text), b(text);
+  const auto r = mink::io::tryReadObj<double>(a, "good.obj");
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_FALSE(r.error());
+  const auto mesh = mink::io::readObj<double>(b, "good.obj");
+  EXPECT_EQ(r.value().vertices, mesh.vertices);
+  EXPECT_EQ(r.value().faces, mesh.faces);
+  EXPECT_EQ(r.value().faces.size(), 4u);
 }
 
 TEST_F(ObjFileTest, MissingFileThrowsNamingIt) {
@@ -192,6 +215,8 @@ TEST_F(ObjFileTest, MissingFileThrowsNamingIt) {
   } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find(missing.string()), std::string::npos) << e.what();
   }
+  mink_io_test::expectSameError(mink::io::tryReadObj<double>(missing),
+                                [&] { (void)mink::io::readObj<double>(missing); }, "missing file");
 }
 
 TEST_F(ObjFileTest, ErrorFromAFileNamesItsPath) {
@@ -202,6 +227,11 @@ TEST_F(ObjFileTest, ErrorFromAFileNamesItsPath) {
   } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find(path.string() + ":2:"), std::string::npos) << e.what();
   }
+  mink_io_test::expectSameError(mink::io::tryReadObj<double>(path), [&] { (void)mink::io::readObj<double>(path); },
+                                "broken file");
+  const auto good = mink::io::tryReadObj<double>(file("good.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  ASSERT_TRUE(good.ok()) << good.error().message();
+  EXPECT_EQ(good.value().faces, (std::vector<std::vector<int>>{{0, 1, 2}}));
 }
 
 TEST_F(ObjFileTest, WriterRejectsBadMeshesWithoutTouchingTheFile) {
@@ -218,6 +248,35 @@ TEST_F(ObjFileTest, WriterRejectsBadMeshesWithoutTouchingTheFile) {
   std::getline(in, content);
   EXPECT_EQ(content, "original");
   EXPECT_THROW(mink::io::writeObj(dir_ / "missing_dir" / "x.obj", v, {{0, 1, 2}}), InvalidInput);
+  // tryWriteObj: the same messages as Errors, the file again untouched; then a good write
+  // that reads back.
+  using Faces = std::vector<std::vector<int>>;
+  const std::pair<std::vector<Vec3<double>>, Faces> bad[] = {
+      {v, {{0, 1, 3}}}, {v, {{0, 1}}}, {v, {{0, -1, 2}}}, {nan, {{0, 1, 2}}}};
+  for (const auto& [verts, faces] : bad) {
+    mink_io_test::expectSameError(mink::io::tryWriteObj(path, verts, faces),
+                                  [&] { mink::io::writeObj(path, verts, faces); }, "path");
+    std::ostringstream out;
+    mink_io_test::expectSameError(mink::io::tryWriteObj(out, verts, faces), [&] {
+      std::ostringstream out2;
+      mink::io::writeObj(out2, verts, faces);
+    }, "stream");
+    EXPECT_TRUE(out.str().empty());
+  }
+  std::ifstream again(path);
+  std::getline(again, content);
+  EXPECT_EQ(content, "original");
+  const fs::path nowhere = dir_ / "missing_dir" / "x.obj";
+  mink_io_test::expectSameError(mink::io::tryWriteObj(nowhere, v, {{0, 1, 2}}),
+                                [&] { mink::io::writeObj(nowhere, v, {{0, 1, 2}}); }, "missing directory");
+  const fs::path written = dir_ / "written.obj";
+  EXPECT_FALSE(mink::io::tryWriteObj(written, mink::io::IndexedMesh<double>{v, {{0, 1, 2}}}));
+  EXPECT_EQ(mink::io::readObj<double>(written).faces, (Faces{{0, 1, 2}}));
+  std::ostringstream out;
+  EXPECT_FALSE(mink::io::tryWriteObj(out, v, {{0, 1, 2}}));
+  std::ostringstream reference;
+  mink::io::writeObj(reference, v, {{0, 1, 2}});
+  EXPECT_EQ(out.str(), reference.str());
 }
 
 TEST_F(ObjFileTest, EmptyFileGivesEmptyMesh) {

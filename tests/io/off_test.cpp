@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <random>
 #include <sstream>
 #include <string>
@@ -114,6 +115,15 @@ TEST(OffReader, MalformedInputNamesFileLineAndProblem) {
       EXPECT_NE(what.find("bad.off:" + std::to_string(c.line) + ":"), std::string::npos) << what;
       EXPECT_NE(what.find(c.fragment), std::string::npos) << what;
     }
+    // The non-throwing twin: the same message as an Error.
+    std::istringstream again(c.text);
+    mink_io_test::expectSameError(
+        mink::io::tryReadOff<double>(again, "bad.off"),
+        [&] {
+          std::istringstream in2(c.text);
+          (void)mink::io::readOff<double>(in2, "bad.off");
+        },
+        c.text);
   }
 }
 
@@ -125,6 +135,40 @@ TEST_F(OffFileTest, MissingFileThrowsNamingIt) {
   } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find(missing.string()), std::string::npos) << e.what();
   }
+  mink_io_test::expectSameError(mink::io::tryReadOff<float>(missing), [&] { (void)mink::io::readOff<float>(missing); },
+                                "missing file");
+}
+
+TEST_F(OffFileTest, TryTwinsAnswerAsTheThrowingOnes) {
+  const std::vector<Vec3<double>> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const std::vector<std::vector<int>> faces = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  const fs::path path = dir_ / "t.off";
+  EXPECT_FALSE(mink::io::tryWriteOff(path, v, faces));
+  const auto r = mink::io::tryReadOff<double>(path);
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  const auto mesh = mink::io::readOff<double>(path);
+  EXPECT_EQ(r.value().vertices, mesh.vertices);
+  EXPECT_EQ(r.value().faces, faces);
+  std::ostringstream out, reference;
+  EXPECT_FALSE(mink::io::tryWriteOff(out, v, faces));
+  mink::io::writeOff(reference, v, faces);
+  EXPECT_EQ(out.str(), reference.str());
+  std::istringstream in(out.str());
+  const auto fromStream = mink::io::tryReadOff<double>(in, "s.off");
+  ASSERT_TRUE(fromStream.ok()) << fromStream.error().message();
+  EXPECT_EQ(fromStream.value().faces, faces);
+  // Rejected meshes, as Errors with the thrown messages; the file is not created.
+  const fs::path refused = dir_ / "refused.off";
+  std::ostringstream unused;
+  mink_io_test::expectSameError(mink::io::tryWriteOff(refused, v, {{0, 1, 4}}),
+                                [&] { mink::io::writeOff(refused, v, {{0, 1, 4}}); }, "index");
+  mink_io_test::expectSameError(mink::io::tryWriteOff(unused, v, {{0, 1}}),
+                                [&] { mink::io::writeOff(unused, v, {{0, 1}}); }, "short face");
+  EXPECT_FALSE(fs::exists(refused));
+  const fs::path nowhere = dir_ / "missing_dir" / "t.off";
+  mink_io_test::expectSameError(mink::io::tryWriteOff(nowhere, mink::io::IndexedMesh<double>{v, faces}),
+                                [&] { mink::io::writeOff(nowhere, mink::io::IndexedMesh<double>{v, faces}); },
+                                "missing directory");
 }
 
 TEST_F(OffFileTest, ObjAndOffDescribeTheSameMesh) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,34 @@ TEST(TriangleMeshIo, MugAndLegoAreRejected) {
   // Its duplicated positions welded, edges come to be shared by four triangles.
   expectRejected([&] { (void)mink::io::readTriangleMesh<double>(data("lego.obj"), {true}); },
                  {"lego.obj: TriangleMesh::fromMesh", "non-manifold (used by 4 triangles"}, "lego welded");
+}
+
+// tryReadTriangleMesh, the entry point of builds without exceptions: each rejection of
+// readTriangleMesh as an Error with the very message thrown (reader, extension, fromMesh
+// with the path prefixed), and the same mesh for a good file.
+TEST_F(TriangleMeshIoFiles, TryReadTriangleMeshAnswersAsReadTriangleMesh) {
+  struct Case {
+    std::filesystem::path path;
+    mink::io::TriangleMeshReadOptions options;
+  };
+  const Case bad[] = {{data("mug.obj"), {}},
+                      {data("lego.obj"), {}},
+                      {data("lego.obj"), {true}},
+                      {file("shape.stl", "solid x\nendsolid x\n"), {}},
+                      {file("broken.obj", "v 0 0 0\nv 1 0\n"), {}},
+                      {file("broken.off", "OFF\n3 1 0\n0 0 0\n"), {}},
+                      {dir_ / "absent.off", {}},
+                      {file("flat.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"), {}}};
+  for (const Case& c : bad) {
+    mink_io_test::expectSameError(mink::io::tryReadTriangleMesh<double>(c.path, c.options),
+                                  [&] { (void)mink::io::readTriangleMesh<double>(c.path, c.options); },
+                                  c.path.string());
+  }
+  const auto r = mink::io::tryReadTriangleMesh<double>(data("torus.obj"));
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  const auto torus = mink::io::readTriangleMesh<double>(data("torus.obj"));
+  EXPECT_EQ(r.value().vertices(), torus.vertices());
+  EXPECT_EQ(r.value().triangles(), torus.triangles());
 }
 
 }  // namespace

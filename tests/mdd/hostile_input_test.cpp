@@ -651,4 +651,63 @@ TEST(MddHostile, ShapesTooThinForTheirNormalsAreRejected) {
   EXPECT_NEAR(r.translation, -3.0, 1e-12);  // Q (x in [4, 6]) moves by -3 to touch x = 1
 }
 
+// checkMddInput / checkIntersectsInput and tryIntersects, what a build without exceptions
+// uses: for every bad pose, direction and option above, the Error's message is the what()
+// that mdd() / intersects() throw; for good input, no Error, and tryIntersects answers as
+// intersects() does. (The status InvalidInput itself only exists without exceptions:
+// tests/no_exceptions/ checks it.)
+TEST(MddHostile, InputChecksGiveTheMessagesThatAreThrown) {
+  const auto B = box(1);
+  Pose<double> q;
+  q.translation = V(3, 0, 0);
+  auto thrown = [](auto&& call) {
+    try {
+      call();
+    } catch (const mink::InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  int checked = 0;
+  for (const BadPose& b : badPoses()) {
+    SCOPED_TRACE(b.name);
+    const mink::Error ep = mink::checkMddInput(B, b.pose, B, q, V(-1, 0, 0));
+    ASSERT_TRUE(ep);
+    EXPECT_EQ(ep.message(), thrown([&] { (void)mink::mdd(B, b.pose, B, q, V(-1, 0, 0)); }));
+    const mink::Error eq = mink::checkMddInput(B, Pose<double>(), B, b.pose, V(-1, 0, 0));
+    ASSERT_TRUE(eq);
+    EXPECT_EQ(eq.message(), thrown([&] { (void)mink::mdd(B, Pose<double>(), B, b.pose, V(-1, 0, 0)); }));
+    const mink::Result<bool> ri = mink::tryIntersects(B, Pose<double>(), B, b.pose);
+    ASSERT_FALSE(ri.ok());
+    EXPECT_EQ(ri.error().message(), thrown([&] { (void)mink::intersects(B, Pose<double>(), B, b.pose); }));
+    EXPECT_EQ(mink::checkIntersectsInput(B, Pose<double>(), B, b.pose).message(), ri.error().message());
+    checked += 3;
+  }
+  for (const V& s : {V(0, 0, 0), V(0, kNaN, 0), V(1, 0, -kInf)}) {
+    const mink::Error e = mink::checkMddInput(B, Pose<double>(), B, q, s);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e.message(), thrown([&] { (void)mink::mdd(B, Pose<double>(), B, q, s); }));
+    ++checked;
+  }
+  mink::MddOptions<double> nanTol;
+  nanTol.touchTolerance = kNaN;
+  EXPECT_EQ(mink::checkMddInput(B, Pose<double>(), B, q, V(-1, 0, 0), nanTol).message(),
+            thrown([&] { (void)mink::mdd(B, Pose<double>(), B, q, V(-1, 0, 0), nanTol); }));
+  const mink::Result<bool> rt = mink::tryIntersects(B, Pose<double>(), B, q, nanTol);
+  ASSERT_FALSE(rt.ok());
+  EXPECT_EQ(rt.error().message(), thrown([&] { (void)mink::intersects(B, Pose<double>(), B, q, nanTol); }));
+  EXPECT_GE(checked, 3 * static_cast<int>(badPoses().size()) + 3);
+  // Good input: no Error, and the same answers.
+  EXPECT_FALSE(mink::checkMddInput(B, Pose<double>(), B, q, V(-1, 0, 0)));
+  EXPECT_FALSE(mink::checkIntersectsInput(B, Pose<double>(), B, q));
+  for (double x : {1.5, 2.0, 2.5}) {
+    Pose<double> at;
+    at.translation = V(x, 0.3, 0);
+    const mink::Result<bool> r = mink::tryIntersects(B, Pose<double>(), B, at);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.value(), mink::intersects(B, Pose<double>(), B, at)) << x;
+    EXPECT_EQ(r.value(), x <= 2.0) << x;
+  }
+}
+
 }  // namespace

@@ -24,14 +24,25 @@ using Tris = std::vector<std::array<int, 3>>;
 const std::vector<V> kTet = {V(0, 0, 0), V(1, 0, 0), V(0, 1, 0), V(0, 0, 1)};
 const Tris kTetTris = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
 
+// Also checks the non-throwing twin: tryFromMesh fails with the very message thrown.
 void reject(const std::vector<V>& v, const Tris& t, std::initializer_list<std::string> needles,
             const std::string& context) {
   expectRejected([&] { (void)TriangleMesh<double>::fromMesh(v, t); }, needles, context);
+  const mink::Result<TriangleMesh<double>> r = TriangleMesh<double>::tryFromMesh(v, t);
+  ASSERT_FALSE(r.ok()) << context;
+  try {
+    (void)TriangleMesh<double>::fromMesh(v, t);
+  } catch (const mink::InvalidInput& e) {
+    EXPECT_EQ(r.error().message(), std::string(e.what())) << context;
+  }
 }
 
 TEST(MeshHostile, TheTetrahedronItselfIsAccepted) {
   const auto m = TriangleMesh<double>::fromMesh(kTet, kTetTris);
   EXPECT_EQ(m.numEdges(), 6);
+  const auto r = TriangleMesh<double>::tryFromMesh(kTet, kTetTris);
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_EQ(r.value().numEdges(), 6);
 }
 
 TEST(MeshHostile, EmptyInput) {

@@ -16,9 +16,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mink/io/triangle_mesh_io.hpp"
@@ -251,6 +253,54 @@ TEST(MeshOverlap, PosesAndFreeFunction) {
   mirror.rotation(2, 2) = -1;
   mink_test::expectRejected([&] { (void)mink::meshesOverlap(torus, mink::Pose<double>(), L, mirror); },
                             {"poseB", "reflection"}, "mirror");
+  // tryMeshesOverlap: the same messages as Errors, and the same answer on good poses.
+  for (const auto& [pa, pb] : {std::pair{bad, mink::Pose<double>()}, std::pair{mink::Pose<double>(), mirror}}) {
+    const mink::Result<bool> r = mink::tryMeshesOverlap(torus, pa, L, pb);
+    ASSERT_FALSE(r.ok());
+    try {
+      (void)mink::meshesOverlap(torus, pa, L, pb);
+      ADD_FAILURE() << "accepted";
+    } catch (const mink::InvalidInput& e) {
+      EXPECT_EQ(r.error().message(), std::string(e.what()));
+    }
+  }
+  const mink::Result<bool> good = mink::tryMeshesOverlap(torus, mink::Pose<double>(), L, mink::Pose<double>());
+  ASSERT_TRUE(good.ok());
+  EXPECT_EQ(good.value(), mink::meshesOverlap(torus, mink::Pose<double>(), L, mink::Pose<double>()));
+}
+
+// trySetPlacement: a rejected placement is an Error with the message setPlacement throws,
+// and B stays where it was; a good one places B as a new MeshOverlap would.
+TEST(MeshOverlap, TrySetPlacement) {
+  const Mesh torus = fromShape(mink_test::torus(12, 8));
+  const Mesh L = fromShape(mink_test::lBlock());
+  const V start(0.5, 0.25, 0);
+  mink::MeshOverlap<double> o(torus, L, M3::Identity(), start);
+  const bool before = o.overlaps();
+  M3 skew = M3::Identity();
+  skew(0, 1) = 0.1;
+  const std::pair<M3, V> bad[] = {{skew, V::Zero()},
+                                  {M3::Identity(), V(0, std::numeric_limits<double>::quiet_NaN(), 0)},
+                                  {-M3::Identity(), V::Zero()}};
+  for (const auto& [R, t] : bad) {
+    const mink::Error e = o.trySetPlacement(R, t);
+    ASSERT_TRUE(e);
+    try {
+      o.setPlacement(R, t);
+      ADD_FAILURE() << "accepted";
+    } catch (const mink::InvalidInput& x) {
+      EXPECT_EQ(e.message(), std::string(x.what()));
+    }
+    EXPECT_EQ(o.translation(), start);
+    EXPECT_EQ(o.overlaps(), before);
+  }
+  std::mt19937 rng(5106u);
+  for (int i = 0; i < 20; ++i) {
+    const M3 R = randomRotation(rng);
+    const V t = mink_test::randomUnitVector(rng) * 3.0 * std::uniform_real_distribution<double>(0, 1)(rng);
+    EXPECT_FALSE(o.trySetPlacement(R, t));
+    EXPECT_EQ(o.overlaps(), mink::MeshOverlap<double>(torus, L, R, t).overlaps()) << "pose " << i;
+  }
 }
 
 TEST(MeshOverlap, WarmQueriesDoNotAllocate) {

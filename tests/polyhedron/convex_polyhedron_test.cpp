@@ -796,9 +796,24 @@ TYPED_TEST(FromMesh, UnreferencedVerticesAreIgnored) {
   EXPECT_TRUE(P.extent() == T(3)) << "extent must ignore unreferenced vertices, got " << dbl(P.extent());
 }
 
+/// fromMesh(v, f), after checking that its non-throwing twin agrees: tryFromMesh fails
+/// with the very message fromMesh throws, or succeeds where fromMesh does.
 template <class T>
 std::function<void()> meshCall(std::vector<Vec3<T>> v, std::vector<std::vector<int>> f) {
-  return [v, f] { (void)ConvexPolyhedron<T>::fromMesh(v, f); };
+  return [v, f] {
+    const mink::Result<ConvexPolyhedron<T>> r = ConvexPolyhedron<T>::tryFromMesh(v, f);
+    try {
+      const ConvexPolyhedron<T> P = ConvexPolyhedron<T>::fromMesh(v, f);
+      EXPECT_TRUE(r.ok()) << "tryFromMesh failed where fromMesh did not: " << r.error().message();
+      if (r.ok()) {
+        EXPECT_EQ(r.value().numFaces(), P.numFaces());
+      }
+    } catch (const mink::InvalidInput& e) {
+      EXPECT_FALSE(r.ok()) << "tryFromMesh accepted what fromMesh rejects: " << e.what();
+      EXPECT_EQ(r.error().message(), std::string(e.what()));
+      throw;
+    }
+  };
 }
 
 // fromMesh with inexact T accepts faces within the tolerance of planar and vertices

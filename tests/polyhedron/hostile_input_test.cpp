@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -152,6 +153,71 @@ TEST(PolyhedronHostile, FacesNarrowerThanTheSquareRootOfTheDoubleRangeHaveNormal
   const auto M = ConvexPolyhedron<double>::fromMesh(verts, faces);
   EXPECT_EQ(M.numFaces(), P.numFaces());
   for (int f = 0; f < M.numFaces(); ++f) EXPECT_NEAR(M.faceNormal(f).norm(), 1.0, 1e-12) << "face " << f;
+}
+
+// tryFromPoints and tryFromMesh, the entry points of builds without exceptions: on every
+// kind of input fromPoints / fromMesh reject, they return the Error whose message is the
+// what() thrown; on good input, the same shape.
+TEST(PolyhedronHostile, TryTwinsReturnTheMessageThatIsThrown) {
+  const double nan = std::nan("");
+  std::vector<V> withNaN = box(1);
+  withNaN[5] = V(0, nan, 0);
+  std::vector<V> flat = {V(0, 0, 0), V(1, 0, 0), V(0, 1, 0), V(1, 1, 0), V(2, 3, 0)};
+  std::vector<V> line = {V(0, 0, 0), V(1, 1, 1), V(2, 2, 2), V(3, 3, 3)};
+  std::vector<V> same(6, V(1, 2, 3));
+  mink::HullOptions<double> badTol;
+  badTol.tolerance = std::numeric_limits<double>::infinity();
+  struct Case {
+    const char* name;
+    std::vector<V> points;
+    mink::HullOptions<double> options;
+    const char* words;
+  };
+  const std::vector<Case> cases = {
+      {"no points", {}, {}, "no points given"},
+      {"three points", {V(0, 0, 0), V(1, 0, 0), V(0, 1, 0)}, {}, "need at least 4 points, got 3"},
+      {"NaN", withNaN, {}, "point 5 has a non-finite coordinate"},
+      {"coplanar", flat, {}, "coplanar"},
+      {"collinear", line, {}, "collinear"},
+      {"coincident", same, {}, "coincide"},
+      {"infinite tolerance", box(1), badTol, "tolerance is not finite"}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const auto r = ConvexPolyhedron<double>::tryFromPoints(c.points, c.options);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message().find(c.words), std::string::npos) << r.error().message();
+    expectRejected([&] { (void)ConvexPolyhedron<double>::fromPoints(c.points, c.options); }, r.error().message(),
+                   std::string("fromPoints: ") + c.name);
+    try {
+      (void)ConvexPolyhedron<double>::fromPoints(c.points, c.options);
+    } catch (const mink::InvalidInput& e) {
+      EXPECT_EQ(r.error().message(), std::string(e.what()));
+    }
+    // value() on the error throws that InvalidInput.
+    expectRejected([&] { (void)r.value(); }, r.error().message(), std::string("value(): ") + c.name);
+  }
+  const auto good = ConvexPolyhedron<double>::tryFromPoints(box(2));
+  ASSERT_TRUE(good.ok()) << good.error().message();
+  EXPECT_FALSE(good.error());
+  EXPECT_EQ(good.value().numVertices(), 8);
+  EXPECT_EQ(good.value().numFaces(), 6);
+  // fromMesh's twin: a cube with a face missing, and the cube itself.
+  const auto cube = ConvexPolyhedron<double>::fromPoints(box(1));
+  std::vector<std::vector<int>> faces;
+  for (int f = 0; f < cube.numFaces(); ++f) {
+    std::vector<int> L;
+    for (int v : cube.faceVertices(f)) L.push_back(v);
+    faces.push_back(L);
+  }
+  const auto whole = ConvexPolyhedron<double>::tryFromMesh(cube.vertices(), faces);
+  ASSERT_TRUE(whole.ok()) << whole.error().message();
+  EXPECT_EQ(whole.value().numFaces(), 6);
+  faces.pop_back();
+  const auto open = ConvexPolyhedron<double>::tryFromMesh(cube.vertices(), faces);
+  ASSERT_FALSE(open.ok());
+  EXPECT_NE(open.error().message().find("not closed"), std::string::npos) << open.error().message();
+  expectRejected([&] { (void)ConvexPolyhedron<double>::fromMesh(cube.vertices(), faces); }, open.error().message(),
+                 "fromMesh: open cube");
 }
 
 }  // namespace

@@ -71,15 +71,20 @@ enum class CpdStatus {
   Approximate,  ///< overlap, but no such q within the caps: q is the best found, on ∂M
                 ///< (if no ball met ∂M at all: the start, within 2^-exitBisectionSteps of
                 ///< the scene's size outside M)
+  InvalidInput  ///< builds without exceptions only (-fno-exceptions), where the query cannot
+                ///< throw: options or a pose it would throw InvalidInput for
+                ///< (ContinuousPenetrationDepth::error(), checkCpdOptions and checkCpdInput
+                ///< give the message); depth, direction, point and normal are NaN
 };
 
-/// The enumerator's name ("Separated", "Penetrating", "Approximate"), for logs and
+/// The enumerator's name ("Separated", "Penetrating", "Approximate", ...), for logs and
 /// messages; "?" for a value outside the enumeration.
 constexpr const char* toString(CpdStatus s) noexcept {
   switch (s) {
     case CpdStatus::Separated: return "Separated";
     case CpdStatus::Penetrating: return "Penetrating";
     case CpdStatus::Approximate: return "Approximate";
+    case CpdStatus::InvalidInput: return "InvalidInput";
   }
   return "?";
 }
@@ -102,6 +107,30 @@ struct CpdResult {
   bool fromPreviousFrame = false;        ///< the search started from the last query's q
 };
 
+/// The Error for CpdOptions out of range (alpha <= 0, beta <= 1, caps < 1, ...), or none.
+template <class T>
+[[nodiscard]] Error checkCpdOptions(const CpdOptions<T>& options) {
+  if (!(options.alpha > T(0)) || !std::isfinite(options.alpha))
+    return Error("CpdOptions: alpha must be positive and finite");
+  if (!(options.beta > T(1)) || !std::isfinite(options.beta))
+    return Error("CpdOptions: beta must be greater than 1 and finite");
+  if (options.maxIterations < 1) return Error("CpdOptions: maxIterations must be at least 1");
+  if (options.exitBisectionSteps < 1) return Error("CpdOptions: exitBisectionSteps must be at least 1");
+  if (!(options.maxRadiusFactor > T(0))) return Error("CpdOptions: maxRadiusFactor must be positive");
+  if (!(options.phong.barycentricTolerance >= T(0)))
+    return Error("CpdOptions: phong.barycentricTolerance must be >= 0");
+  return Error();
+}
+
+/// The Error for poses a CPD or PD query does not take (not rigid, not finite), or none;
+/// `who` names the query in the message.
+template <class T>
+[[nodiscard]] Error checkCpdInput(const Pose<T>& poseA, const Pose<T>& poseB,
+                                  const char* who = "ContinuousPenetrationDepth::query") {
+  if (Error e = detail::checkRigidPlacement(poseA.rotation, poseA.translation, who, "poseA")) return e;
+  return detail::checkRigidPlacement(poseB.rotation, poseB.translation, who, "poseB");
+}
+
 namespace detail {
 
 /// Algorithm 2 for both queries: mode Phong (CPD) or Euclidean (PD).
@@ -114,23 +143,27 @@ class PenetrationSearch {
 
   PenetrationSearch(const TriangleMesh<T>& A, const TriangleMesh<T>& B, const CpdOptions<T>& options)
       : A_(A), B_(B), options_(options), sum_(A, B, options.localSum),
-        overlap_(A, B, Mat3<T>::Identity(), Vec3<T>::Zero()) {
-    if (!(options.alpha > T(0)) || !std::isfinite(options.alpha))
-      throw InvalidInput("CpdOptions: alpha must be positive and finite");
-    if (!(options.beta > T(1)) || !std::isfinite(options.beta))
-      throw InvalidInput("CpdOptions: beta must be greater than 1 and finite");
-    if (options.maxIterations < 1) throw InvalidInput("CpdOptions: maxIterations must be at least 1");
-    if (options.exitBisectionSteps < 1) throw InvalidInput("CpdOptions: exitBisectionSteps must be at least 1");
-    if (!(options.maxRadiusFactor > T(0))) throw InvalidInput("CpdOptions: maxRadiusFactor must be positive");
-    if (!(options.phong.barycentricTolerance >= T(0))) throw InvalidInput("CpdOptions: phong.barycentricTolerance must be >= 0");
+        overlap_(A, B, Mat3<T>::Identity(), Vec3<T>::Zero()), error_(checkCpdOptions(options)) {
+#if MINK_EXCEPTIONS
+    raiseIf(error_);
+#endif
   }
 
+  /// The options' Error, else the last query's (set in builds without exceptions only), or
+  /// none.
+  const Error& error() const { return error_ ? error_ : queryError_; }
+
   CpdResult<T> run(const Pose<T>& poseA, const Pose<T>& poseB, Mode mode, const char* who) {
-    checkRigidPlacement(poseA.rotation, poseA.translation, who, "poseA");
-    checkRigidPlacement(poseB.rotation, poseB.translation, who, "poseB");
+    if (error_) return invalidInput(error_);
+    if (queryError_) queryError_ = Error();  // error() tells of this query only
+    if (Error e = checkCpdInput(poseA, poseB, who)) return invalidInput(e);
     CpdResult<T> res;
     RA_ = poseA.rotation;
-    overlap_.setPlacement(RA_.transpose() * poseB.rotation, RA_.transpose() * (poseB.translation - poseA.translation));
+    // The relative placement is checked too: two rotations each within the tolerance can
+    // compose to one just outside it.
+    if (Error e = overlap_.trySetPlacement(RA_.transpose() * poseB.rotation,
+                                           RA_.transpose() * (poseB.translation - poseA.translation)))
+      return invalidInput(e);
     if (!overlap_.overlaps()) {
       hasLast_ = false;
       return res;
@@ -224,6 +257,22 @@ class PenetrationSearch {
   void reset() { hasLast_ = false; }
 
  private:
+  /// Bad input: InvalidInput thrown, or (without exceptions) kept for error() and the status
+  /// InvalidInput with NaN depth, direction, point and normal.
+  CpdResult<T> invalidInput(const Error& e) {
+#if MINK_EXCEPTIONS
+    raise(e);
+#else
+    if (&e != &error_) queryError_ = e;
+    CpdResult<T> r;
+    const T nan = std::numeric_limits<T>::quiet_NaN();
+    r.status = CpdStatus::InvalidInput;
+    r.depth = nan;
+    r.direction = r.point = r.normal = Vec3<T>::Constant(nan);
+    return r;
+#endif
+  }
+
   struct Candidate {
     Vec3<T> point = Vec3<T>::Zero();
     Vec3<T> normal = Vec3<T>::Zero();
@@ -439,6 +488,8 @@ class PenetrationSearch {
   CpdOptions<T> options_;
   LocalMinkowskiSum<T> sum_;
   MeshOverlap<T> overlap_;
+  Error error_;       // the options'
+  Error queryError_;  // the last query's pose (builds without exceptions)
   PhongSurface<T> surface_;
   Mat3<T> RA_ = Mat3<T>::Identity();
   Vec3<T> last_ = Vec3<T>::Zero();
@@ -449,16 +500,25 @@ class PenetrationSearch {
 }  // namespace detail
 
 /// CPD of one pair of meshes, frame after frame: keeps its local Minkowski sum and the
-/// last answer's q, from which the next query starts (section 6.2).
+/// last answer's q, from which the next query starts (section 6.2). Built without
+/// exceptions, bad options or poses give CpdStatus::InvalidInput instead of a throw.
 template <class T>
 class ContinuousPenetrationDepth {
  public:
-  /// Throws InvalidInput for options out of range (alpha <= 0, beta <= 1, caps < 1).
+  /// Throws InvalidInput for options out of range (alpha <= 0, beta <= 1, caps < 1:
+  /// checkCpdOptions); without exceptions, keeps that Error (error()) and answers every
+  /// query InvalidInput.
   ContinuousPenetrationDepth(const TriangleMesh<T>& A, const TriangleMesh<T>& B, const CpdOptions<T>& options = {})
       : search_(A, B, options) {}
 
+  /// Builds without exceptions only: why queries answer InvalidInput. The options' Error
+  /// (checkCpdOptions; every query answers InvalidInput), else that of the last query if
+  /// its poses were rejected; no Error otherwise (and always, with exceptions).
+  const Error& error() const { return search_.error(); }
+
   /// A at poseA, B at poseB (world frame). Throws InvalidInput for a pose that is not
-  /// rigid or not finite, before any work.
+  /// rigid or not finite, before any work (without exceptions: the status InvalidInput,
+  /// and error() gives the message).
   CpdResult<T> query(const Pose<T>& poseA, const Pose<T>& poseB) {
     return search_.run(poseA, poseB, detail::PenetrationSearch<T>::Mode::Phong, "ContinuousPenetrationDepth::query");
   }
@@ -476,6 +536,8 @@ class ContinuousPenetrationDepth {
 /// point can be the corner of a step of ∂M (a concave crease whose two faces both turn
 /// away from o); B moved by depth * direction touches A there, but moving it a little
 /// further along direction makes them overlap again.
+/// Throws InvalidInput as ContinuousPenetrationDepth does (without exceptions: the status
+/// InvalidInput).
 template <class T>
 CpdResult<T> penetrationDepth(const TriangleMesh<T>& A, const Pose<T>& poseA, const TriangleMesh<T>& B,
                               const Pose<T>& poseB, const CpdOptions<T>& options = {}) {

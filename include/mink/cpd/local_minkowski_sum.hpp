@@ -56,10 +56,6 @@ struct LocalMinkowskiSumOptions {
 
 namespace detail {
 
-template <class T>
-void checkPoseForCpd(const Pose<T>& pose, const char* name) {
-  checkRigidPlacement(pose.rotation, pose.translation, "LocalMinkowskiSum", name);
-}
 
 /// The unit LocalMinkowskiSum works in. The trimming's constructions and filters multiply
 /// up to nine coordinates of M, which over- or underflow far from unit scale. When the
@@ -139,16 +135,29 @@ class LocalMinkowskiSum {
         frame_(A_, B_),
         overlap_(A_, B_, Mat3<T>::Identity(), Vec3<T>::Zero()) {}
 
-  /// The patch of ∂M inside the ball (centre, radius), world frame. Throws InvalidInput for
-  /// a non-finite centre, a radius <= 0 or not finite, or a pose that is not rigid.
-  const MinkowskiPatch<T>& update(const Pose<T>& poseA, const Pose<T>& poseB, const Vec3<T>& centre, T radius) {
-    detail::checkPoseForCpd(poseA, "poseA");
-    detail::checkPoseForCpd(poseB, "poseB");
+  /// The Error update() raises for these arguments before any work, or none: a pose that is
+  /// not rigid, a non-finite centre, a radius <= 0 or not finite.
+  [[nodiscard]] static Error checkUpdate(const Pose<T>& poseA, const Pose<T>& poseB, const Vec3<T>& centre,
+                                         const T& radius) {
+    if (Error e = detail::checkRigidPlacement(poseA.rotation, poseA.translation, "LocalMinkowskiSum", "poseA"))
+      return e;
+    if (Error e = detail::checkRigidPlacement(poseB.rotation, poseB.translation, "LocalMinkowskiSum", "poseB"))
+      return e;
     for (int i = 0; i < 3; ++i)
       if (!ScalarTraits<T>::isFinite(centre[i]))
-        throw InvalidInput("LocalMinkowskiSum::update: the ball's centre is not finite");
+        return Error("LocalMinkowskiSum::update: the ball's centre is not finite");
     if (!(radius > T(0)) || !ScalarTraits<T>::isFinite(radius))
-      throw InvalidInput("LocalMinkowskiSum::update: the ball's radius must be positive and finite");
+      return Error("LocalMinkowskiSum::update: the ball's radius must be positive and finite");
+    return Error();
+  }
+
+  /// update() without exceptions: a pointer to the patch (the one patch() returns, valid
+  /// until the next update), or the Error update() throws: checkUpdate's, or a ball whose
+  /// centre or radius overflows in the units of the meshes' size (2^±1000 apart). Allocates
+  /// nothing more than update() does.
+  Result<const MinkowskiPatch<T>*> tryUpdate(const Pose<T>& poseA, const Pose<T>& poseB, const Vec3<T>& centre,
+                                             T radius) {
+    if (Error e = checkUpdate(poseA, poseB, centre, radius)) return e;
     // B in A's frame; M in A's frame is RA^T times M in the world frame (the translations
     // cancel in a − b up to tB − tA).
     const Mat3<T> RAt = poseA.rotation.transpose();
@@ -172,14 +181,18 @@ class LocalMinkowskiSum {
       bool finite = ScalarTraits<T>::isFinite(region_.radius);
       for (int a = 0; a < 3; ++a) finite = finite && ScalarTraits<T>::isFinite(region_.centre[a]);
       if (!finite)
-        throw InvalidInput("LocalMinkowskiSum::update: the ball's centre or radius overflows in units of the "
-                           "meshes' size (2^" + std::to_string(scaleExp_) + ")");
+        return Error("LocalMinkowskiSum::update: the ball's centre or radius overflows in units of the "
+                     "meshes' size (2^" + std::to_string(scaleExp_) + ")");
     }
     // Placing B (its vertices mapped, the overlap test's box tree of B rebuilt) only when
     // the relative pose moved: a query's successive balls share one.
     if (!placed_ || !(R == placedR_) || !(t == placedT_)) {
+      // Two rotations each within the tolerance can compose to one just outside it.
+      if (Error e = overlap_.trySetPlacement(R, t)) {
+        placed_ = false;
+        return e;
+      }
       frame_.place(R, t);
-      overlap_.setPlacement(R, t);
       placedR_ = R;
       placedT_ = t;
       placed_ = true;
@@ -205,7 +218,15 @@ class LocalMinkowskiSum {
           for (int a = 0; a < 3; ++a) v[a] = std::ldexp(v[a], scaleExp_);
       }
     }
-    return patch_;
+    return &patch_;
+  }
+
+  /// The patch of ∂M inside the ball (centre, radius), world frame. Throws InvalidInput for
+  /// a non-finite centre, a radius <= 0 or not finite, or a pose that is not rigid
+  /// (checkUpdate), or a ball that overflows in the meshes' units (without exceptions,
+  /// prints the message and aborts: use tryUpdate).
+  const MinkowskiPatch<T>& update(const Pose<T>& poseA, const Pose<T>& poseB, const Vec3<T>& centre, T radius) {
+    return *tryUpdate(poseA, poseB, centre, radius).value();
   }
 
   /// The last patch.

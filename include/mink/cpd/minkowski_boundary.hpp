@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "mink/core/error.hpp"
 #include "mink/cpd/convolution.hpp"
 #include "mink/cpd/detail/trimming.hpp"
 #include "mink/cpd/minkowski_patch.hpp"
@@ -17,16 +18,19 @@
 
 namespace mink {
 
-/// ∂M for A at poseA and B at poseB, triangulated, world frame (see MinkowskiPatch).
-/// Throws InvalidInput for a pose that is not rigid.
+/// ∂M for A at poseA and B at poseB, triangulated, world frame (see MinkowskiPatch), or the
+/// Error minkowskiBoundary throws for a pose that is not rigid. Never throws.
 template <class T>
-MinkowskiPatch<T> minkowskiBoundary(const TriangleMesh<T>& A, const Pose<T>& poseA, const TriangleMesh<T>& B,
-                                    const Pose<T>& poseB) {
-  detail::checkRigidPlacement(poseA.rotation, poseA.translation, "minkowskiBoundary", "poseA");
-  detail::checkRigidPlacement(poseB.rotation, poseB.translation, "minkowskiBoundary", "poseB");
+Result<MinkowskiPatch<T>> tryMinkowskiBoundary(const TriangleMesh<T>& A, const Pose<T>& poseA,
+                                               const TriangleMesh<T>& B, const Pose<T>& poseB) {
+  if (Error e = detail::checkRigidPlacement(poseA.rotation, poseA.translation, "minkowskiBoundary", "poseA")) return e;
+  if (Error e = detail::checkRigidPlacement(poseB.rotation, poseB.translation, "minkowskiBoundary", "poseB")) return e;
   const Mat3<T> RAt = poseA.rotation.transpose();
   const Mat3<T> R = RAt * poseB.rotation;
   const Vec3<T> t = RAt * (poseB.translation - poseA.translation);
+  // The relative placement, as MeshOverlap's constructor checks it (two rotations each
+  // within the tolerance can compose to one just outside it).
+  if (Error e = detail::checkRigidPlacement(R, t, "MeshOverlap", "placement")) return e;
   ConvolutionFrame<T> frame(A, B);
   frame.place(R, t);
   MeshOverlap<T> overlap(A, B, R, t);
@@ -38,6 +42,15 @@ MinkowskiPatch<T> minkowskiBoundary(const TriangleMesh<T>& A, const Pose<T>& pos
   for (Vec3<T>& v : patch.vertices) v = poseA.rotation * v;
   patch.rebuilt = true;
   return patch;
+}
+
+/// ∂M for A at poseA and B at poseB, triangulated, world frame (see MinkowskiPatch).
+/// Throws InvalidInput for a pose that is not rigid (without exceptions, prints it and
+/// aborts: use tryMinkowskiBoundary).
+template <class T>
+MinkowskiPatch<T> minkowskiBoundary(const TriangleMesh<T>& A, const Pose<T>& poseA, const TriangleMesh<T>& B,
+                                    const Pose<T>& poseB) {
+  return tryMinkowskiBoundary(A, poseA, B, poseB).value();
 }
 
 }  // namespace mink

@@ -124,8 +124,13 @@ class DKHierarchy {
 
   /// Builds the hierarchy of `shape` (any size; a shape with at most topVertices
   /// vertices gets a single level). The hierarchy copies what it needs: it does not
-  /// refer to `shape` afterwards. Throws InvalidInput for out-of-range options.
+  /// refer to `shape` afterwards. Throws InvalidInput for out-of-range options (see
+  /// checkOptions; without exceptions, prints its message and aborts).
   explicit DKHierarchy(const ConvexPolyhedron<T>& shape, const DKHierarchyOptions& options = {});
+
+  /// The Error the constructor raises for `options`, or none: maxRemovedDegree < 3 or
+  /// topVertices < 4.
+  [[nodiscard]] static Error checkOptions(const DKHierarchyOptions& options);
 
   /// An ORIGINAL vertex index maximising direction . x (direction need not be unit;
   /// a zero direction returns some vertex). Exact for exact T. No allocation.
@@ -190,7 +195,7 @@ class DKHierarchy {
   static bool fillHoles(const Level& cur, const std::vector<char>& blocked, const std::vector<int>& kept,
                         detail::DkPolygonFill& fill, Level& next);
   /// L(i+1) = the hull of the kept points (fromPoints with `tolerance`), triangulated.
-  /// False when the hull throws.
+  /// False when the kept points have no hull (flat within `tolerance`).
   static bool rehull(const Level& cur, const std::vector<int>& kept, const T& tolerance,
                      detail::DkPolygonFill& fill, Level& next);
 

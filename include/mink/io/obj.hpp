@@ -10,7 +10,8 @@
 //   4. every other keyword of the specification (vt, vn, g, o, s, usemtl, l, ...) is
 //      read past; anything that is not a keyword of the specification is an error.
 // Output: IndexedMesh<T> with 0-based indices in file order. Errors: mink::InvalidInput
-// whose message starts with "<file>:<line>:" and names the problem.
+// whose message starts with "<file>:<line>:" and names the problem (readObj / writeObj), or
+// that message as an Error (tryReadObj / tryWriteObj, which never throw).
 //
 // Numbers are parsed and printed without the C locale (std::from_chars / to_chars), so a
 // float / double / long double mesh written by writeObj reads back bit for bit.
@@ -53,50 +54,50 @@ inline bool isIgnoredObjKeyword(std::string_view keyword) {
 }
 
 /// Vertex index of one face reference ("v", "v/vt", "v//vn", "v/vt/vn"), still in OBJ
-/// numbering (1-based or negative). The vt / vn parts must be integers when present.
-inline int parseObjFaceReference(std::string_view ref, const std::string& source,
-                                 std::size_t line) {
+/// numbering (1-based or negative), into `vertex`. The vt / vn parts must be integers
+/// when present.
+[[nodiscard]] inline Error parseObjFaceReference(std::string_view ref, const std::string& source, std::size_t line,
+                                                 int& vertex) {
   std::string_view parts[3];
   std::size_t count = 0;
   std::size_t begin = 0;
   while (true) {
     const std::size_t slash = ref.find('/', begin);
     if (count == 3) {
-      failAt(source, line,
-             "face reference '" + std::string(ref) + "' has more than three '/'-separated parts");
+      return errorAt(source, line,
+                     "face reference '" + std::string(ref) + "' has more than three '/'-separated parts");
     }
     parts[count++] = ref.substr(begin, slash == std::string_view::npos ? slash : slash - begin);
     if (slash == std::string_view::npos) break;
     begin = slash + 1;
   }
-  int vertex = 0;
   if (!parseInt(parts[0], vertex)) {
-    failAt(source, line,
-           "face reference '" + std::string(ref) + "' does not start with an integer vertex index");
+    return errorAt(source, line,
+                   "face reference '" + std::string(ref) + "' does not start with an integer vertex index");
   }
   for (std::size_t k = 1; k < count; ++k) {
     int unused = 0;
     // "v//vn" leaves the texture part empty; an empty normal part ("v/vt/") is not OBJ.
     const bool mayBeEmpty = k == 1 && count == 3;
     if (parts[k].empty() ? !mayBeEmpty : !parseInt(parts[k], unused)) {
-      failAt(source, line, "face reference '" + std::string(ref) + "' has a malformed " +
-                               (k == 1 ? "texture" : "normal") + " index");
+      return errorAt(source, line, "face reference '" + std::string(ref) + "' has a malformed " +
+                                       (k == 1 ? "texture" : "normal") + " index");
     }
   }
   if (vertex == 0) {
-    failAt(source, line, "vertex index 0 in face reference '" + std::string(ref) +
-                             "' (OBJ indices start at 1; negative ones count back)");
+    return errorAt(source, line, "vertex index 0 in face reference '" + std::string(ref) +
+                                     "' (OBJ indices start at 1; negative ones count back)");
   }
-  return vertex;
+  return Error();
 }
 
 }  // namespace detail
 
-/// Reads an OBJ polygon mesh from `in`; `sourceName` names it in error messages.
-/// Throws InvalidInput("<sourceName>:<line>: <problem>") on a malformed statement, a
-/// face with fewer than 3 vertices, or a vertex index that is 0 or out of range.
+/// Reads an OBJ polygon mesh from `in`; `sourceName` names it in error messages. The
+/// mesh, or the Error "<sourceName>:<line>: <problem>" for a malformed statement, a face
+/// with fewer than 3 vertices, or a vertex index that is 0 or out of range. Never throws.
 template <class T>
-IndexedMesh<T> readObj(std::istream& in, const std::string& sourceName = "<stream>") {
+Result<IndexedMesh<T>> tryReadObj(std::istream& in, const std::string& sourceName = "<stream>") {
   IndexedMesh<T> mesh;
   // A positive index may name a vertex defined further down; those are checked at the end.
   struct ForwardReference {
@@ -106,42 +107,43 @@ IndexedMesh<T> readObj(std::istream& in, const std::string& sourceName = "<strea
   std::vector<ForwardReference> forward;
 
   const auto fail = [&](std::size_t line, const std::string& problem) {
-    detail::failAt(sourceName, line, problem);
+    return detail::errorAt(sourceName, line, problem);
   };
-  const auto parseStatement = [&](std::string_view text, std::size_t line) {
+  const auto parseStatement = [&](std::string_view text, std::size_t line) -> Error {
     const std::vector<std::string_view> tokens = detail::splitTokens(text);
-    if (tokens.empty()) return;
+    if (tokens.empty()) return Error();
     const std::string_view keyword = tokens[0];
     if (keyword == "v") {
       const std::size_t n = tokens.size() - 1;
       if (n < 3 || n > 7) {
-        fail(line, "vertex statement needs x y z and at most 4 optional values, found " +
-                       std::to_string(n) + " values");
+        return fail(line, "vertex statement needs x y z and at most 4 optional values, found " +
+                              std::to_string(n) + " values");
       }
       Vec3<T> p;
       for (std::size_t k = 1; k <= n; ++k) {
         T value{};
         if (!detail::parseScalar(tokens[k], value)) {
-          fail(line, "'" + std::string(tokens[k]) + "' is not a finite number");
+          return fail(line, "'" + std::string(tokens[k]) + "' is not a finite number");
         }
         if (k <= 3) p[static_cast<int>(k - 1)] = value;
       }
       mesh.vertices.push_back(p);
     } else if (keyword == "f") {
       if (tokens.size() < 4) {
-        fail(line, "face needs at least 3 vertices, found " + std::to_string(tokens.size() - 1));
+        return fail(line, "face needs at least 3 vertices, found " + std::to_string(tokens.size() - 1));
       }
       const long long defined = static_cast<long long>(mesh.vertices.size());
       std::vector<int> face;
       face.reserve(tokens.size() - 1);
       for (std::size_t k = 1; k < tokens.size(); ++k) {
-        const int index = detail::parseObjFaceReference(tokens[k], sourceName, line);
+        int index = 0;
+        if (Error e = detail::parseObjFaceReference(tokens[k], sourceName, line, index)) return e;
         if (index < 0) {
           const long long zeroBased = defined + index;
           if (zeroBased < 0) {
-            fail(line, "relative vertex index " + std::to_string(index) +
-                           " reaches before the first vertex (" + std::to_string(defined) +
-                           " defined so far)");
+            return fail(line, "relative vertex index " + std::to_string(index) +
+                                  " reaches before the first vertex (" + std::to_string(defined) +
+                                  " defined so far)");
           }
           face.push_back(static_cast<int>(zeroBased));
         } else {
@@ -151,8 +153,9 @@ IndexedMesh<T> readObj(std::istream& in, const std::string& sourceName = "<strea
       }
       mesh.faces.push_back(std::move(face));
     } else if (!detail::isIgnoredObjKeyword(keyword)) {
-      fail(line, "'" + std::string(keyword) + "' is not an OBJ statement");
+      return fail(line, "'" + std::string(keyword) + "' is not an OBJ statement");
     }
+    return Error();
   };
 
   std::string physical;
@@ -176,46 +179,61 @@ IndexedMesh<T> readObj(std::istream& in, const std::string& sourceName = "<strea
     if (continued) text.remove_suffix(1);
     statement.append(text.data(), text.size());
     statement.push_back(' ');
-    if (!continued) parseStatement(statement, statementLine);
+    if (!continued) {
+      if (Error e = parseStatement(statement, statementLine)) return e;
+    }
   }
-  if (in.bad()) fail(lineNumber, "read error");
-  if (continued) parseStatement(statement, statementLine);
+  if (in.bad()) return fail(lineNumber, "read error");
+  if (continued) {
+    if (Error e = parseStatement(statement, statementLine)) return e;
+  }
 
   const long long total = static_cast<long long>(mesh.vertices.size());
   for (const ForwardReference& ref : forward) {
     if (ref.index > total) {
-      fail(ref.line, "vertex index " + std::to_string(ref.index) +
-                         " is out of range (the file has " + std::to_string(total) +
-                         " vertices)");
+      return fail(ref.line, "vertex index " + std::to_string(ref.index) + " is out of range (the file has " +
+                                std::to_string(total) + " vertices)");
     }
   }
   return mesh;
+}
+
+/// Reads an OBJ polygon mesh from `in` (see tryReadObj). Throws InvalidInput("<sourceName>:
+/// <line>: <problem>") on a malformed statement, a face with fewer than 3 vertices, or a
+/// vertex index that is 0 or out of range.
+template <class T>
+IndexedMesh<T> readObj(std::istream& in, const std::string& sourceName = "<stream>") {
+  return tryReadObj<T>(in, sourceName).value();
+}
+
+/// Reads the OBJ file at `path`: the mesh, or the Error naming the file when it cannot be
+/// opened, and "<path>:<line>: <problem>" for malformed content. Never throws.
+template <class T>
+Result<IndexedMesh<T>> tryReadObj(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Error("cannot open OBJ file '" + path.string() + "'");
+  return tryReadObj<T>(in, path.string());
 }
 
 /// Reads the OBJ file at `path`. Throws InvalidInput naming the file when it cannot be
 /// opened, and "<path>:<line>: <problem>" for malformed content (see the stream overload).
 template <class T>
 IndexedMesh<T> readObj(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput("cannot open OBJ file '" + path.string() + "'");
-  return readObj<T>(in, path.string());
+  return tryReadObj<T>(path).value();
 }
 
-/// Writes `vertices` (#V points) and `faces` (#F loops of >= 3 0-based indices) as OBJ
-/// text to `out`, 1-based as the format wants. Checks everything before writing a byte:
-/// throws InvalidInput for a non-finite coordinate, a face with fewer than 3 indices or
-/// an index outside [0, #V).
+namespace detail {
+
+/// The OBJ text of a mesh that checkWritable accepted.
 template <class T>
-void writeObj(std::ostream& out, const std::vector<Vec3<T>>& vertices,
-              const std::vector<std::vector<int>>& faces) {
-  detail::checkWritable("writeObj", vertices, faces);
+void writeObjText(std::ostream& out, const std::vector<Vec3<T>>& vertices, const std::vector<std::vector<int>>& faces) {
   out << "# written by mink: " << vertices.size() << " vertices, " << faces.size()
       << " faces\n";
   for (const Vec3<T>& p : vertices) {
     out << 'v';
     for (int k = 0; k < 3; ++k) {
       out << ' ';
-      detail::writeScalar(out, p[k]);
+      writeScalar(out, p[k]);
     }
     out << '\n';
   }
@@ -226,18 +244,52 @@ void writeObj(std::ostream& out, const std::vector<Vec3<T>>& vertices,
   }
 }
 
-/// Writes an OBJ file at `path` (created or truncated). Throws InvalidInput for the
-/// reasons of the stream overload (before the file is touched), when the file cannot be
-/// created, or on a write error.
+}  // namespace detail
+
+/// Writes `vertices` (#V points) and `faces` (#F loops of >= 3 0-based indices) as OBJ
+/// text to `out`, 1-based as the format wants. Checks everything before writing a byte:
+/// the Error for a non-finite coordinate, a face with fewer than 3 indices or an index
+/// outside [0, #V); none when written. Never throws.
+template <class T>
+[[nodiscard]] Error tryWriteObj(std::ostream& out, const std::vector<Vec3<T>>& vertices,
+                                const std::vector<std::vector<int>>& faces) {
+  if (Error e = detail::checkWritable("writeObj", vertices, faces)) return e;
+  detail::writeObjText(out, vertices, faces);
+  return Error();
+}
+
+/// tryWriteObj, throwing InvalidInput for what it reports.
+template <class T>
+void writeObj(std::ostream& out, const std::vector<Vec3<T>>& vertices,
+              const std::vector<std::vector<int>>& faces) {
+  ::mink::detail::raiseIf(tryWriteObj(out, vertices, faces));
+}
+
+/// Writes an OBJ file at `path` (created or truncated). The Error, for the reasons of the
+/// stream overload (before the file is touched), when the file cannot be created, or on a
+/// write error; none when written. Never throws.
+template <class T>
+[[nodiscard]] Error tryWriteObj(const std::filesystem::path& path, const std::vector<Vec3<T>>& vertices,
+                                const std::vector<std::vector<int>>& faces) {
+  if (Error e = detail::checkWritable("writeObj", vertices, faces)) return e;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) return Error("cannot create OBJ file '" + path.string() + "'");
+  detail::writeObjText(out, vertices, faces);
+  out.flush();
+  if (!out) return Error("error while writing OBJ file '" + path.string() + "'");
+  return Error();
+}
+
+/// Writes an OBJ file at `path`; throws InvalidInput for what tryWriteObj reports.
 template <class T>
 void writeObj(const std::filesystem::path& path, const std::vector<Vec3<T>>& vertices,
               const std::vector<std::vector<int>>& faces) {
-  detail::checkWritable("writeObj", vertices, faces);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InvalidInput("cannot create OBJ file '" + path.string() + "'");
-  writeObj(out, vertices, faces);
-  out.flush();
-  if (!out) throw InvalidInput("error while writing OBJ file '" + path.string() + "'");
+  ::mink::detail::raiseIf(tryWriteObj(path, vertices, faces));
+}
+
+template <class T>
+[[nodiscard]] Error tryWriteObj(const std::filesystem::path& path, const IndexedMesh<T>& mesh) {
+  return tryWriteObj(path, mesh.vertices, mesh.faces);
 }
 
 template <class T>

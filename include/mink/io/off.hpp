@@ -8,7 +8,8 @@
 //   3. counts "#V #F #E" (#E is informational and ignored);
 //   4. #V lines "x y z [extra values]";
 //   5. #F lines "n i_1 ... i_n [colour values]" with 0-based indices.
-// Output: IndexedMesh<T>. Errors: mink::InvalidInput "<file>:<line>: <problem>".
+// Output: IndexedMesh<T>. Errors: mink::InvalidInput "<file>:<line>: <problem>" (readOff /
+// writeOff), or that message as an Error (tryReadOff / tryWriteOff, which never throw).
 // Numbers as in obj.hpp: locale-free, bit-exact round trips for floating-point T.
 #pragma once
 
@@ -32,76 +33,75 @@
 namespace mink {
 namespace io {
 
-/// Reads an OFF polygon mesh from `in`; `sourceName` names it in error messages.
-/// Throws InvalidInput("<sourceName>:<line>: <problem>") for a missing or unsupported
-/// header, bad counts, a malformed or missing vertex or face line, an index outside
-/// [0, #V), a face with fewer than 3 vertices, or content after the last face.
+/// Reads an OFF polygon mesh from `in`; `sourceName` names it in error messages. The mesh,
+/// or the Error "<sourceName>:<line>: <problem>" for a missing or unsupported header, bad
+/// counts, a malformed or missing vertex or face line, an index outside [0, #V), a face
+/// with fewer than 3 vertices, or content after the last face. Never throws.
 template <class T>
-IndexedMesh<T> readOff(std::istream& in, const std::string& sourceName = "<stream>") {
+Result<IndexedMesh<T>> tryReadOff(std::istream& in, const std::string& sourceName = "<stream>") {
   IndexedMesh<T> mesh;
   std::string physical;
   std::size_t lineNumber = 0;
-  const auto fail = [&](const std::string& problem) {
-    detail::failAt(sourceName, lineNumber, problem);
-  };
+  const auto fail = [&](const std::string& problem) { return detail::errorAt(sourceName, lineNumber, problem); };
   // Next line that holds anything but comments and blanks, as tokens; empty at the end.
-  const auto nextTokens = [&]() -> std::vector<std::string_view> {
+  const auto nextTokens = [&](std::vector<std::string_view>& tokens) -> Error {
     while (std::getline(in, physical)) {
       ++lineNumber;
       std::string_view text = physical;
       if (lineNumber == 1) text = detail::stripByteOrderMark(text);
-      std::vector<std::string_view> tokens = detail::splitTokens(detail::stripComment(text));
-      if (!tokens.empty()) return tokens;
+      tokens = detail::splitTokens(detail::stripComment(text));
+      if (!tokens.empty()) return Error();
     }
-    if (in.bad()) fail("read error");
-    return {};
+    tokens.clear();
+    if (in.bad()) return fail("read error");
+    return Error();
   };
-  const auto count = [&](std::string_view token, const char* what) {
-    int n = 0;
+  const auto count = [&](std::string_view token, const char* what, int& n) -> Error {
     if (!detail::parseInt(token, n) || n < 0) {
-      fail(std::string("'") + std::string(token) + "' is not a valid " + what);
+      return fail(std::string("'") + std::string(token) + "' is not a valid " + what);
     }
-    return n;
+    return Error();
   };
 
-  std::vector<std::string_view> tokens = nextTokens();
-  if (tokens.empty()) fail("empty file (expected the OFF header)");
+  std::vector<std::string_view> tokens;
+  if (Error e = nextTokens(tokens)) return e;
+  if (tokens.empty()) return fail("empty file (expected the OFF header)");
   const std::string_view header = tokens[0];
   // [ST][C][N][4][n]OFF: mink accepts the 3-D forms only, so no '4' and no 'n'.
   const bool offSuffix = header.size() >= 3 && header.substr(header.size() - 3) == "OFF";
   const std::string_view prefix = offSuffix ? header.substr(0, header.size() - 3) : header;
   if (!offSuffix || prefix.find_first_not_of("STCN") != std::string_view::npos) {
-    fail("expected an OFF header (OFF, COFF, NOFF, STOFF, ...), found '" +
-         std::string(header) + "'");
+    return fail("expected an OFF header (OFF, COFF, NOFF, STOFF, ...), found '" + std::string(header) + "'");
   }
   std::vector<std::string_view> counts(tokens.begin() + 1, tokens.end());
-  if (counts.empty()) counts = nextTokens();
-  if (counts.size() < 2 || counts.size() > 3) {
-    fail("expected the counts '#vertices #faces [#edges]'");
+  if (counts.empty()) {
+    if (Error e = nextTokens(counts)) return e;
   }
-  const int numVertices = count(counts[0], "vertex count");
-  const int numFaces = count(counts[1], "face count");
-  if (counts.size() == 3) count(counts[2], "edge count");
+  if (counts.size() < 2 || counts.size() > 3) return fail("expected the counts '#vertices #faces [#edges]'");
+  int numVertices = 0, numFaces = 0, numEdges = 0;
+  if (Error e = count(counts[0], "vertex count", numVertices)) return e;
+  if (Error e = count(counts[1], "face count", numFaces)) return e;
+  if (counts.size() == 3) {
+    if (Error e = count(counts[2], "edge count", numEdges)) return e;
+  }
 
   // The counts come from the file: reserve no more than a modest amount up front, so a
   // forged header cannot demand gigabytes; a real large mesh just grows as it is read.
   constexpr int kReserveCap = 1 << 16;
   mesh.vertices.reserve(static_cast<std::size_t>(std::min(numVertices, kReserveCap)));
   for (int v = 0; v < numVertices; ++v) {
-    tokens = nextTokens();
+    if (Error e = nextTokens(tokens)) return e;
     if (tokens.empty()) {
-      fail("file ends after " + std::to_string(v) + " of " + std::to_string(numVertices) +
-           " vertices");
+      return fail("file ends after " + std::to_string(v) + " of " + std::to_string(numVertices) + " vertices");
     }
     if (tokens.size() < 3) {
-      fail("vertex " + std::to_string(v) + " needs 3 coordinates, found " +
-           std::to_string(tokens.size()));
+      return fail("vertex " + std::to_string(v) + " needs 3 coordinates, found " + std::to_string(tokens.size()));
     }
     Vec3<T> p;
     for (std::size_t k = 0; k < tokens.size(); ++k) {
       T value{};
       if (!detail::parseScalar(tokens[k], value)) {
-        fail("'" + std::string(tokens[k]) + "' is not a finite number");
+        return fail("'" + std::string(tokens[k]) + "' is not a finite number");
       }
       if (k < 3) p[static_cast<int>(k)] = value;
     }
@@ -110,54 +110,68 @@ IndexedMesh<T> readOff(std::istream& in, const std::string& sourceName = "<strea
 
   mesh.faces.reserve(static_cast<std::size_t>(std::min(numFaces, kReserveCap)));
   for (int f = 0; f < numFaces; ++f) {
-    tokens = nextTokens();
+    if (Error e = nextTokens(tokens)) return e;
     if (tokens.empty()) {
-      fail("file ends after " + std::to_string(f) + " of " + std::to_string(numFaces) +
-           " faces");
+      return fail("file ends after " + std::to_string(f) + " of " + std::to_string(numFaces) + " faces");
     }
-    const int n = count(tokens[0], "face size");
-    if (n < 3) fail("face " + std::to_string(f) + " has " + std::to_string(n) +
-                    " vertices (at least 3 needed)");
+    int n = 0;
+    if (Error e = count(tokens[0], "face size", n)) return e;
+    if (n < 3) return fail("face " + std::to_string(f) + " has " + std::to_string(n) + " vertices (at least 3 needed)");
     if (tokens.size() < static_cast<std::size_t>(n) + 1) {
-      fail("face " + std::to_string(f) + " announces " + std::to_string(n) +
-           " vertices but lists " + std::to_string(tokens.size() - 1));
+      return fail("face " + std::to_string(f) + " announces " + std::to_string(n) + " vertices but lists " +
+                  std::to_string(tokens.size() - 1));
     }
     std::vector<int> face(static_cast<std::size_t>(n));
     for (int k = 0; k < n; ++k) {
       const std::string_view token = tokens[static_cast<std::size_t>(k) + 1];
       if (!detail::parseInt(token, face[k]) || face[k] < 0 || face[k] >= numVertices) {
-        fail("'" + std::string(token) + "' is not a vertex index in [0, " +
-             std::to_string(numVertices) + ")");
+        return fail("'" + std::string(token) + "' is not a vertex index in [0, " + std::to_string(numVertices) + ")");
       }
     }
     for (std::size_t k = static_cast<std::size_t>(n) + 1; k < tokens.size(); ++k) {
       double colour = 0;
       if (!detail::parseScalar(tokens[k], colour)) {
-        fail("'" + std::string(tokens[k]) + "' after the face's indices is not a colour value");
+        return fail("'" + std::string(tokens[k]) + "' after the face's indices is not a colour value");
       }
     }
     mesh.faces.push_back(std::move(face));
   }
-  if (!nextTokens().empty()) fail("unexpected content after the last face");
+  if (Error e = nextTokens(tokens)) return e;
+  if (!tokens.empty()) return fail("unexpected content after the last face");
   return mesh;
+}
+
+/// Reads an OFF polygon mesh from `in` (see tryReadOff). Throws InvalidInput("<sourceName>:
+/// <line>: <problem>") for a missing or unsupported header, bad counts, a malformed or
+/// missing vertex or face line, an index outside [0, #V), a face with fewer than 3
+/// vertices, or content after the last face.
+template <class T>
+IndexedMesh<T> readOff(std::istream& in, const std::string& sourceName = "<stream>") {
+  return tryReadOff<T>(in, sourceName).value();
+}
+
+/// Reads the OFF file at `path`: the mesh, or the Error naming the file when it cannot be
+/// opened, and "<path>:<line>: <problem>" for malformed content. Never throws.
+template <class T>
+Result<IndexedMesh<T>> tryReadOff(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Error("cannot open OFF file '" + path.string() + "'");
+  return tryReadOff<T>(in, path.string());
 }
 
 /// Reads the OFF file at `path`. Throws InvalidInput naming the file when it cannot be
 /// opened, and "<path>:<line>: <problem>" for malformed content.
 template <class T>
 IndexedMesh<T> readOff(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput("cannot open OFF file '" + path.string() + "'");
-  return readOff<T>(in, path.string());
+  return tryReadOff<T>(path).value();
 }
 
-/// Writes `vertices` (#V points) and `faces` (#F loops of >= 3 0-based indices) as OFF.
-/// The edge count in the header is the number of distinct undirected edges. Throws
-/// InvalidInput, before writing, for the reasons writeObj does.
+namespace detail {
+
+/// The OFF text of a mesh that checkWritable accepted; the header's edge count is the
+/// number of distinct undirected edges.
 template <class T>
-void writeOff(std::ostream& out, const std::vector<Vec3<T>>& vertices,
-              const std::vector<std::vector<int>>& faces) {
-  detail::checkWritable("writeOff", vertices, faces);
+void writeOffText(std::ostream& out, const std::vector<Vec3<T>>& vertices, const std::vector<std::vector<int>>& faces) {
   std::set<std::pair<int, int>> edges;
   for (const std::vector<int>& face : faces) {
     for (std::size_t k = 0; k < face.size(); ++k) {
@@ -171,7 +185,7 @@ void writeOff(std::ostream& out, const std::vector<Vec3<T>>& vertices,
   for (const Vec3<T>& p : vertices) {
     for (int k = 0; k < 3; ++k) {
       if (k > 0) out << ' ';
-      detail::writeScalar(out, p[k]);
+      writeScalar(out, p[k]);
     }
     out << '\n';
   }
@@ -182,16 +196,50 @@ void writeOff(std::ostream& out, const std::vector<Vec3<T>>& vertices,
   }
 }
 
-/// Writes an OFF file at `path` (created or truncated); throws InvalidInput as writeObj.
+}  // namespace detail
+
+/// Writes `vertices` (#V points) and `faces` (#F loops of >= 3 0-based indices) as OFF.
+/// The edge count in the header is the number of distinct undirected edges. The Error,
+/// before writing, for the reasons tryWriteObj gives; none when written. Never throws.
+template <class T>
+[[nodiscard]] Error tryWriteOff(std::ostream& out, const std::vector<Vec3<T>>& vertices,
+                                const std::vector<std::vector<int>>& faces) {
+  if (Error e = detail::checkWritable("writeOff", vertices, faces)) return e;
+  detail::writeOffText(out, vertices, faces);
+  return Error();
+}
+
+/// tryWriteOff, throwing InvalidInput for what it reports.
+template <class T>
+void writeOff(std::ostream& out, const std::vector<Vec3<T>>& vertices,
+              const std::vector<std::vector<int>>& faces) {
+  ::mink::detail::raiseIf(tryWriteOff(out, vertices, faces));
+}
+
+/// Writes an OFF file at `path` (created or truncated); the Error as tryWriteObj's, none
+/// when written. Never throws.
+template <class T>
+[[nodiscard]] Error tryWriteOff(const std::filesystem::path& path, const std::vector<Vec3<T>>& vertices,
+                                const std::vector<std::vector<int>>& faces) {
+  if (Error e = detail::checkWritable("writeOff", vertices, faces)) return e;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) return Error("cannot create OFF file '" + path.string() + "'");
+  detail::writeOffText(out, vertices, faces);
+  out.flush();
+  if (!out) return Error("error while writing OFF file '" + path.string() + "'");
+  return Error();
+}
+
+/// Writes an OFF file at `path`; throws InvalidInput for what tryWriteOff reports.
 template <class T>
 void writeOff(const std::filesystem::path& path, const std::vector<Vec3<T>>& vertices,
               const std::vector<std::vector<int>>& faces) {
-  detail::checkWritable("writeOff", vertices, faces);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InvalidInput("cannot create OFF file '" + path.string() + "'");
-  writeOff(out, vertices, faces);
-  out.flush();
-  if (!out) throw InvalidInput("error while writing OFF file '" + path.string() + "'");
+  ::mink::detail::raiseIf(tryWriteOff(path, vertices, faces));
+}
+
+template <class T>
+[[nodiscard]] Error tryWriteOff(const std::filesystem::path& path, const IndexedMesh<T>& mesh) {
+  return tryWriteOff(path, mesh.vertices, mesh.faces);
 }
 
 template <class T>

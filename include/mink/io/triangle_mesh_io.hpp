@@ -9,6 +9,8 @@
 //      once they are merged);
 //   4. TriangleMesh<T>::fromMesh validates the result; its message is prefixed with the
 //      file name.
+// readTriangleMesh throws mink::InvalidInput; tryReadTriangleMesh returns the same message
+// as an Error and never throws.
 #pragma once
 
 #include <algorithm>
@@ -97,31 +99,35 @@ struct TriangleMeshReadOptions {
 };
 
 /// Reads `path` (.obj or .off, by extension, any case), fan-triangulates it, optionally
-/// welds it and builds the TriangleMesh. Throws InvalidInput: the readers' errors
-/// ("<path>:<line>: ..."), an unknown extension, or fromMesh's rejection prefixed with
-/// the path ("<path>: TriangleMesh::fromMesh: ...").
+/// welds it and builds the TriangleMesh. The mesh, or the Error: the readers' errors
+/// ("<path>:<line>: ..."), an unknown extension, or fromMesh's rejection prefixed with the
+/// path ("<path>: TriangleMesh::fromMesh: ..."). Never throws.
 template <class T>
-TriangleMesh<T> readTriangleMesh(const std::filesystem::path& path, const TriangleMeshReadOptions& options = {}) {
+Result<TriangleMesh<T>> tryReadTriangleMesh(const std::filesystem::path& path,
+                                            const TriangleMeshReadOptions& options = {}) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  IndexedMesh<T> polygons;
-  if (ext == ".obj") {
-    polygons = readObj<T>(path);
-  } else if (ext == ".off") {
-    polygons = readOff<T>(path);
-  } else {
-    throw InvalidInput("readTriangleMesh: '" + path.string() + "' is neither .obj nor .off");
-  }
-  TriangleSoup<T> soup = fanTriangulate(polygons);
+  if (ext != ".obj" && ext != ".off")
+    return Error("readTriangleMesh: '" + path.string() + "' is neither .obj nor .off");
+  Result<IndexedMesh<T>> polygons = ext == ".obj" ? tryReadObj<T>(path) : tryReadOff<T>(path);
+  if (!polygons.ok()) return polygons.error();
+  TriangleSoup<T> soup = fanTriangulate(polygons.value());
   if (options.weld) soup = weldExactDuplicates(soup);
-  try {
-    return TriangleMesh<T>::fromMesh(soup.vertices, soup.triangles);
-  } catch (const InvalidInput& e) {
-    std::string what = e.what();
-    const std::string prefix = "mink: ";
-    if (what.compare(0, prefix.size(), prefix) == 0) what.erase(0, prefix.size());
-    throw InvalidInput(path.string() + ": " + what);
-  }
+  Result<TriangleMesh<T>> mesh = TriangleMesh<T>::tryFromMesh(soup.vertices, soup.triangles);
+  if (mesh.ok()) return mesh;
+  // "mink: TriangleMesh::fromMesh: ..." becomes "mink: <path>: TriangleMesh::fromMesh: ...".
+  std::string what = mesh.error().message();
+  const std::string prefix = "mink: ";
+  if (what.compare(0, prefix.size(), prefix) == 0) what.erase(0, prefix.size());
+  return Error(path.string() + ": " + what);
+}
+
+/// tryReadTriangleMesh, throwing InvalidInput for what it reports: the readers' errors
+/// ("<path>:<line>: ..."), an unknown extension, or fromMesh's rejection prefixed with the
+/// path ("<path>: TriangleMesh::fromMesh: ...").
+template <class T>
+TriangleMesh<T> readTriangleMesh(const std::filesystem::path& path, const TriangleMeshReadOptions& options = {}) {
+  return tryReadTriangleMesh<T>(path, options).value();
 }
 
 }  // namespace io

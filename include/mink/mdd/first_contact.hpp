@@ -44,7 +44,9 @@ struct FirstContact {
 /// The first contact of Q translated by τ·d, τ in [0, 1] (d in the world frame, any
 /// non-zero length: the whole motion, e.g. relative velocity × time step, or a segment's
 /// end minus its start), P fixed at poseP. `cache` as for mdd(): one per pair of shapes
-/// for coherent motion. Throws InvalidInput as mdd() does (zero or non-finite d, ...).
+/// for coherent motion. Throws InvalidInput as mdd() does (zero or non-finite d, ...);
+/// without exceptions, such input gives mdd.status InvalidInput, reported (like
+/// IterationLimit) as a contact at τ = 0, the conservative answer.
 template <class T>
 FirstContact<T> firstContact(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                              const Pose<T>& poseQ, const Vec3<T>& d, MddCache<T>& cache,
@@ -57,6 +59,7 @@ FirstContact<T> firstContact(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
   switch (out.mdd.status) {
     case MddStatus::Penetrating:
     case MddStatus::IterationLimit:
+    case MddStatus::InvalidInput:
       out.hit = out.approaching = true;
       out.fraction = T(0);
       break;

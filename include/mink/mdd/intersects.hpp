@@ -9,22 +9,24 @@
 
 namespace mink {
 
-/// Collision mode (section V): do P and Q (closed sets) share a point? Touching counts.
-/// The centre of duality is any interior point of M: interior(P) − interior(Q). The exit
-/// portal towards the origin (MPR, detail/exit_portal.hpp) answers first; where it cannot
-/// (touching within the tolerance), the search towards the origin stops at the first face
-/// with the origin strictly outside.
-/// Options as for mdd(): shapes within `touchTolerance` (a length; automatic by default)
-/// count as touching, hence intersecting (the portal says "apart" only beyond it);
-/// `maxVisits` / `maxExhaustivePairs` cap the search after the portal, and a search that
-/// hits a cap answers `true` (the conservative answer for collision detection);
-/// `useHierarchy` as in mdd(). Throws InvalidInput for non-finite / non-orthonormal poses
-/// and a NaN touchTolerance.
+/// The Error for input intersects() does not take, or none: a NaN options.touchTolerance,
+/// a pose that is not a rigid placement, a shape too thin for the Gauss-map tests in its
+/// scalar type. Allocates nothing when the input is fine.
 template <class T>
-bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
-                const Pose<T>& poseQ, MddCache<T>& cache, const MddOptions<T>& options = {}) {
+[[nodiscard]] Error checkIntersectsInput(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
+                                         const ConvexPolyhedron<T>& Q, const Pose<T>& poseQ,
+                                         const MddOptions<T>& options = {}) {
   if (!(options.touchTolerance == options.touchTolerance))
-    throw InvalidInput("intersects: options.touchTolerance is NaN (use a negative value for automatic)");
+    return Error("intersects: options.touchTolerance is NaN (use a negative value for automatic)");
+  return detail::checkPlacedPair(P, poseP, Q, poseQ);
+}
+
+namespace detail {
+
+/// intersects() on input that passed checkIntersectsInput.
+template <class T>
+bool intersectsChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                       const Pose<T>& poseQ, MddCache<T>& cache, const MddOptions<T>& options) {
   const detail::RelativePose<T> rel = detail::relativePose(P, poseP, Q, poseQ, cache);
   const Mat3<T>& R = rel.R;
   const Vec3<T>& t = rel.t;
@@ -75,12 +77,49 @@ bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Convex
   return param <= tol;
 }
 
+}  // namespace detail
+
+/// Collision mode (section V): do P and Q (closed sets) share a point? Touching counts.
+/// The centre of duality is any interior point of M: interior(P) − interior(Q). The exit
+/// portal towards the origin (MPR, detail/exit_portal.hpp) answers first; where it cannot
+/// (touching within the tolerance), the search towards the origin stops at the first face
+/// with the origin strictly outside.
+/// Options as for mdd(): shapes within `touchTolerance` (a length; automatic by default)
+/// count as touching, hence intersecting (the portal says "apart" only beyond it);
+/// `maxVisits` / `maxExhaustivePairs` cap the search after the portal, and a search that
+/// hits a cap answers `true` (the conservative answer for collision detection);
+/// `useHierarchy` as in mdd(). Throws InvalidInput for non-finite / non-orthonormal poses
+/// and a NaN touchTolerance (checkIntersectsInput; without exceptions, prints its message
+/// and aborts: use tryIntersects there).
+template <class T>
+bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                const Pose<T>& poseQ, MddCache<T>& cache, const MddOptions<T>& options = {}) {
+  detail::raiseIf(checkIntersectsInput(P, poseP, Q, poseQ, options));
+  return detail::intersectsChecked(P, poseP, Q, poseQ, cache, options);
+}
+
+/// intersects() without exceptions: the answer, or the Error for input it does not take.
+template <class T>
+Result<bool> tryIntersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                           const Pose<T>& poseQ, MddCache<T>& cache, const MddOptions<T>& options = {}) {
+  if (Error e = checkIntersectsInput(P, poseP, Q, poseQ, options)) return e;
+  return detail::intersectsChecked(P, poseP, Q, poseQ, cache, options);
+}
+
 /// intersects() without a coherence cache.
 template <class T>
 bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                 const Pose<T>& poseQ, const MddOptions<T>& options = {}) {
   MddCache<T> cache;
   return intersects(P, poseP, Q, poseQ, cache, options);
+}
+
+/// tryIntersects() without a coherence cache.
+template <class T>
+Result<bool> tryIntersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                           const Pose<T>& poseQ, const MddOptions<T>& options = {}) {
+  MddCache<T> cache;
+  return tryIntersects(P, poseP, Q, poseQ, cache, options);
 }
 
 }  // namespace mink

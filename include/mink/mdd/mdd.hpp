@@ -25,11 +25,47 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "mink/mdd/detail/mdd_driver.hpp"
 
 namespace mink {
+
+/// The Error for input mdd(), mddExact() and firstContact() do not take, or none: a zero
+/// or non-finite s, a NaN options.touchTolerance, a pose that is not a rigid placement, a
+/// shape too thin for the Gauss-map tests in its scalar type. mdd() throws it as
+/// InvalidInput (without exceptions: answers MddStatus::InvalidInput). Allocates nothing
+/// when the input is fine.
+template <class T>
+[[nodiscard]] Error checkMddInput(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                                  const Pose<T>& poseQ, const Vec3<T>& s, const MddOptions<T>& options = {}) {
+  for (int i = 0; i < 3; ++i)
+    if (!ScalarTraits<T>::isFinite(s[i])) return Error("mdd: direction s is not finite");
+  if (s == Vec3<T>::Zero()) return Error("mdd: direction s is zero");
+  if (!(options.touchTolerance == options.touchTolerance))
+    return Error("mdd: options.touchTolerance is NaN (use a negative value for automatic)");
+  return detail::checkPlacedPair(P, poseP, Q, poseQ);
+}
+
 namespace detail {
+
+/// The answer to input that checkMddInput rejects: InvalidInput thrown, or (without
+/// exceptions) the status InvalidInput with NaN distance, translation and parameter.
+template <class T>
+MddResult<T> invalidMddInput(const Error& error) {
+#if MINK_EXCEPTIONS
+  raise(error);
+#else
+  (void)error;
+  MddResult<T> r;
+  r.status = MddStatus::InvalidInput;
+  r.path = MddPath::None;
+  r.faceType = MddFaceType::None;
+  if constexpr (std::numeric_limits<T>::has_quiet_NaN)
+    r.distance = r.translation = r.parameter = std::numeric_limits<T>::quiet_NaN();
+  return r;
+#endif
+}
 
 /// mdd() with the input checked here; `bothExits` searches both exits of a penetrating
 /// line even where the first is provably the nearer (mddExact certifies both ends).
@@ -37,11 +73,7 @@ template <class T>
 MddResult<T> mddQuery(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                       const Pose<T>& poseQ, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options,
                       bool bothExits) {
-  for (int i = 0; i < 3; ++i)
-    if (!ScalarTraits<T>::isFinite(s[i])) throw InvalidInput("mdd: direction s is not finite");
-  if (s == Vec3<T>::Zero()) throw InvalidInput("mdd: direction s is zero");
-  if (!(options.touchTolerance == options.touchTolerance))
-    throw InvalidInput("mdd: options.touchTolerance is NaN (use a negative value for automatic)");
+  if (Error e = checkMddInput(P, poseP, Q, poseQ, s, options)) return invalidMddInput<T>(e);
   if constexpr (ScalarTraits<T>::isExact) {
     return MddDriver<T>(P, poseP, Q, poseQ, s, cache, options, bothExits).run();
   } else {
@@ -72,8 +104,9 @@ MddResult<T> mddQuery(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const 
 /// Minimum directional distance between P (placed by poseP) and Q (placed by poseQ)
 /// along s (world frame, any non-zero length): see MddResult for the
 /// meaning, unit, frame and sign of every output. Throws InvalidInput for a zero or
-/// non-finite s, a non-finite / non-orthonormal pose or a NaN touchTolerance; never
-/// throws otherwise.
+/// non-finite s, a non-finite / non-orthonormal pose or a NaN touchTolerance
+/// (checkMddInput); never throws otherwise. Built without exceptions, it answers
+/// MddStatus::InvalidInput for such input instead.
 /// `cache` (optional) carries frame coherence between queries of the same pair.
 template <class T>
 MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,

@@ -248,7 +248,8 @@ ExactMdd<E> mddExactFallback(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
 /// closed under + − × ÷): the status and parameter of eq. (1) of Choi et al. (MddStatus) for the numbers
 /// given, poses applied exactly (x_world = rotation * x + translation, in E), for the
 /// convex hulls of the shapes' vertices. See the header comment for how; `certified`
-/// says which path answered. Throws InvalidInput as mdd() does. Cost: the tests at the
+/// says which path answered. Throws InvalidInput as mdd() does (without exceptions: status
+/// InvalidInput, parameter 0). Cost: the tests at the
 /// features of one or two faces (or at two support vertices) in interval arithmetic, E
 /// only where an interval cannot tell (ties) and for the parameter returned, when
 /// certified; a full mdd<E>, with the exact hulls of both shapes built first, when not
@@ -263,6 +264,13 @@ ExactMdd<E> mddExact(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const C
   MddCache<T> cache;
   // Checks the input; both exits of a penetrating line, for the chord's certificate.
   const MddResult<T> r = detail::mddQuery(P, poseP, Q, poseQ, s, cache, options, true);
+  if (r.status == MddStatus::InvalidInput) {  // builds without exceptions only
+    ExactMdd<E> out;
+    out.status = MddStatus::InvalidInput;
+    out.parameter = E(0);
+    out.certified = false;
+    return out;
+  }
   if (P.isExactHull() && Q.isExactHull()) {
     if (r.status == MddStatus::NoContact && r.featureP >= 0 && r.featureQ >= 0) {
       detail::Verdict v = detail::Verdict::Unknown;

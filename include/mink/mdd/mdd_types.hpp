@@ -21,16 +21,19 @@ enum class MddStatus {
   Touching,     ///< P and Q touch (0 on the boundary of M; within tolerance for inexact T)
   Penetrating,  ///< P and Q overlap; translation is the shorter way out along ±s
   NoContact,    ///< no motion of Q along s ever makes P and Q touch (line misses M)
-  IterationLimit  ///< a search hit its iteration cap, or needed a fallback over more edge
-                  ///< pairs than MddOptions::maxExhaustivePairs: no answer (distance,
-                  ///< translation and parameter are NaN for floating-point T)
+  IterationLimit,  ///< a search hit its iteration cap, or needed a fallback over more edge
+                   ///< pairs than MddOptions::maxExhaustivePairs: no answer (distance,
+                   ///< translation and parameter are NaN for floating-point T)
+  InvalidInput  ///< builds without exceptions only (-fno-exceptions), where mdd() cannot
+                ///< throw: the input is one that mdd() throws InvalidInput for (checkMddInput
+                ///< gives the message); no answer (NaN as for IterationLimit)
 };
 
 /// Which step of mdd() answered (MddResult::path), from the cheapest: each exit of M along
 /// the line (two for a penetrating query) is found by one of them, and the result names
 /// the costliest that ran.
 enum class MddPath {
-  None,         ///< NoContact from the centre of duality, or IterationLimit
+  None,         ///< NoContact from the centre of duality, IterationLimit or InvalidInput
   Cache,        ///< the faces kept in the MddCache, certified again (fromCache)
   Certificate,  ///< a face at the exit-portal estimate's (or a kept face's) support
                 ///< vertices whose facet the line crosses, accepted without a search
@@ -43,7 +46,7 @@ enum class MddPath {
 
 /// Type of the face of M that the line of s hits (MDD paper section II-C).
 enum class MddFaceType {
-  None,  ///< NoContact or IterationLimit
+  None,  ///< NoContact, IterationLimit or InvalidInput
   FV,    ///< face of P (featureP) translated by a vertex of −Q (featureQ)
   VF,    ///< vertex of P (featureP) plus a face of −Q (featureQ)
   EE,    ///< parallelogram of an edge of P (featureP) and an edge of −Q (featureQ)
@@ -60,6 +63,7 @@ constexpr const char* toString(MddStatus s) noexcept {
     case MddStatus::Penetrating: return "Penetrating";
     case MddStatus::NoContact: return "NoContact";
     case MddStatus::IterationLimit: return "IterationLimit";
+    case MddStatus::InvalidInput: return "InvalidInput";
   }
   return "?";
 }

@@ -72,7 +72,8 @@ template <class T>
 class MeshOverlap {
  public:
   /// B placed in A's frame: a point x of B is at rotation · x + translation. Throws
-  /// InvalidInput when the rotation is not one (see detail::checkRigidPlacement).
+  /// InvalidInput when the rotation is not one (see detail::checkRigidPlacement). Without
+  /// exceptions, construct at the identity and place with trySetPlacement.
   MeshOverlap(const TriangleMesh<T>& A, const TriangleMesh<T>& B, const Mat3<T>& rotation,
               const Vec3<T>& translation)
       : A_(A), B_(B) {
@@ -107,13 +108,22 @@ class MeshOverlap {
   }
 
   /// A at poseA and B at poseB (world frame): B's placement in A's frame is
-  /// (RA^T RB, RA^T (tB − tA)).
+  /// (RA^T RB, RA^T (tB − tA)). Throws InvalidInput for a pose that is not a rigid
+  /// placement (without exceptions, see tryMeshesOverlap for the checks).
   MeshOverlap(const TriangleMesh<T>& A, const Pose<T>& poseA, const TriangleMesh<T>& B, const Pose<T>& poseB)
       : MeshOverlap(A, B, relativeRotation(poseA, poseB), relativeTranslation(poseA, poseB)) {}
 
-  /// Places B anew (same meshes); allocates nothing.
+  /// Places B anew (same meshes); allocates nothing. Throws InvalidInput when the rotation
+  /// is not one (without exceptions, prints it and aborts: use trySetPlacement).
   void setPlacement(const Mat3<T>& rotation, const Vec3<T>& translation) {
-    detail::checkRigidPlacement(rotation, translation, "MeshOverlap", "placement");
+    detail::raiseIf(trySetPlacement(rotation, translation));
+  }
+
+  /// setPlacement without exceptions: the Error "MeshOverlap: placement..." for a rotation
+  /// that is not one or a translation that is not finite (B keeps its placement), or none
+  /// once B is placed. Allocates nothing when the placement is fine.
+  [[nodiscard]] Error trySetPlacement(const Mat3<T>& rotation, const Vec3<T>& translation) {
+    if (Error e = detail::checkRigidPlacement(rotation, translation, "MeshOverlap", "placement")) return e;
     R_ = rotation;
     t_ = translation;
     for (std::size_t v = 0; v < bPoints_.size(); ++v) bPoints_[v] = R_ * B_.vertex(static_cast<int>(v)) + t_;
@@ -156,6 +166,7 @@ class MeshOverlap {
       for (const detail::Box3& b : aBoxes_) scale = std::max({scale, b.hi.cwiseAbs().maxCoeff(), b.lo.cwiseAbs().maxCoeff()});
       boxScale_ = scale;
     }
+    return Error();
   }
 
   const Mat3<T>& rotation() const { return R_; }
@@ -215,8 +226,8 @@ class MeshOverlap {
   };
 
   static Mat3<T> relativeRotation(const Pose<T>& a, const Pose<T>& b) {
-    detail::checkRigidPlacement(a.rotation, a.translation, "MeshOverlap", "poseA");
-    detail::checkRigidPlacement(b.rotation, b.translation, "MeshOverlap", "poseB");
+    detail::raiseIf(detail::checkRigidPlacement(a.rotation, a.translation, "MeshOverlap", "poseA"));
+    detail::raiseIf(detail::checkRigidPlacement(b.rotation, b.translation, "MeshOverlap", "poseB"));
     return a.rotation.transpose() * b.rotation;
   }
   static Vec3<T> relativeTranslation(const Pose<T>& a, const Pose<T>& b) {
@@ -394,13 +405,29 @@ class MeshOverlap {
   OverlapResult result_;
 };
 
+/// meshesOverlap without exceptions: whether A at poseA and B at poseB (world frame) share
+/// a point, or the Error meshesOverlap throws for a pose that is not a rigid placement
+/// (poseA, poseB, then their relative placement, as MeshOverlap's constructor checks them).
+template <class T>
+Result<bool> tryMeshesOverlap(const TriangleMesh<T>& A, const Pose<T>& poseA, const TriangleMesh<T>& B,
+                              const Pose<T>& poseB) {
+  if (Error e = detail::checkRigidPlacement(poseA.rotation, poseA.translation, "MeshOverlap", "poseA")) return e;
+  if (Error e = detail::checkRigidPlacement(poseB.rotation, poseB.translation, "MeshOverlap", "poseB")) return e;
+  const Mat3<T> RAt = poseA.rotation.transpose();
+  const Mat3<T> R = RAt * poseB.rotation;
+  const Vec3<T> t = RAt * (poseB.translation - poseA.translation);
+  if (Error e = detail::checkRigidPlacement(R, t, "MeshOverlap", "placement")) return e;
+  MeshOverlap<T> o(A, B, R, t);
+  return o.overlaps();
+}
+
 /// Do A at poseA and B at poseB (world frame) share a point? One-off form of MeshOverlap
 /// (which it builds: O(#vertices of B) set-up and allocation); throws InvalidInput for a
-/// pose whose rotation is not one.
+/// pose whose rotation is not one (without exceptions: prints it and aborts; use
+/// tryMeshesOverlap).
 template <class T>
 bool meshesOverlap(const TriangleMesh<T>& A, const Pose<T>& poseA, const TriangleMesh<T>& B, const Pose<T>& poseB) {
-  MeshOverlap<T> o(A, poseA, B, poseB);
-  return o.overlaps();
+  return tryMeshesOverlap(A, poseA, B, poseB).value();
 }
 
 }  // namespace mink

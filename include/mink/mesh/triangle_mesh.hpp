@@ -69,6 +69,11 @@ class TriangleMesh {
   /// component oriented inward (negative signed volume) or of zero volume.
   static TriangleMesh fromMesh(const std::vector<Vec3<T>>& vertices,
                                const std::vector<std::array<int, 3>>& triangles);
+  /// fromMesh without exceptions: the mesh, or the Error whose message is the what() of
+  /// the InvalidInput fromMesh would throw (the entry point of builds without exceptions,
+  /// where fromMesh prints that message and aborts).
+  static Result<TriangleMesh> tryFromMesh(const std::vector<Vec3<T>>& vertices,
+                                          const std::vector<std::array<int, 3>>& triangles);
 
   // ---- counts: V − E + F = 2 (#components − genus) ----
   int numVertices() const { return static_cast<int>(d_->vertices.size()); }

@@ -124,6 +124,27 @@ class ConvexPolyhedron {
     return fromMesh(convertPoints(vertices), faces, options);
   }
 
+  /// fromPoints and fromMesh without exceptions: the shape, or the Error whose message is
+  /// the what() of the InvalidInput they would throw. The entry points to use in builds
+  /// without exceptions (-fno-exceptions), where fromPoints and fromMesh print that message
+  /// and abort on bad input.
+  static Result<ConvexPolyhedron> tryFromPoints(const std::vector<Vec3<T>>& points,
+                                                const HullOptions<T>& options = {});
+  static Result<ConvexPolyhedron> tryFromMesh(const std::vector<Vec3<T>>& vertices,
+                                              const std::vector<std::vector<int>>& faces,
+                                              const HullOptions<T>& options = {});
+  template <class U, class = std::enable_if_t<!std::is_same<U, T>::value>>
+  static Result<ConvexPolyhedron> tryFromPoints(const std::vector<Vec3<U>>& points,
+                                                const HullOptions<T>& options = {}) {
+    return tryFromPoints(convertPoints(points), options);
+  }
+  template <class U, class = std::enable_if_t<!std::is_same<U, T>::value>>
+  static Result<ConvexPolyhedron> tryFromMesh(const std::vector<Vec3<U>>& vertices,
+                                              const std::vector<std::vector<int>>& faces,
+                                              const HullOptions<T>& options = {}) {
+    return tryFromMesh(convertPoints(vertices), faces, options);
+  }
+
   // ---- counts (V - E + F == 2) ----
   int numVertices() const { return static_cast<int>(vertices_.size()); }
   int numEdges() const { return static_cast<int>(edgeHalfEdge_.size()); }

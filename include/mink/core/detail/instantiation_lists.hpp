@@ -11,6 +11,10 @@
   EXTERN template ::mink::ConvexPolyhedron<T>(::mink::ConvexPolyhedron<T>::fromPoints)(                         \
       const std::vector<::mink::Vec3<T>>&, const ::mink::HullOptions<T>&);                                      \
   EXTERN template ::mink::ConvexPolyhedron<T>(::mink::ConvexPolyhedron<T>::fromMesh)(                           \
+      const std::vector<::mink::Vec3<T>>&, const std::vector<std::vector<int>>&, const ::mink::HullOptions<T>&); \
+  EXTERN template ::mink::Result<::mink::ConvexPolyhedron<T>>(::mink::ConvexPolyhedron<T>::tryFromPoints)(      \
+      const std::vector<::mink::Vec3<T>>&, const ::mink::HullOptions<T>&);                                      \
+  EXTERN template ::mink::Result<::mink::ConvexPolyhedron<T>>(::mink::ConvexPolyhedron<T>::tryFromMesh)(        \
       const std::vector<::mink::Vec3<T>>&, const std::vector<std::vector<int>>&, const ::mink::HullOptions<T>&);
 
 // hierarchy/prepare.hpp
@@ -32,7 +36,10 @@
                                            ::mink::MddCache<T>&, const ::mink::MddOptions<T>&);        \
   EXTERN template bool mink::intersects<T>(const ::mink::ConvexPolyhedron<T>&, const ::mink::Pose<T>&, \
                                            const ::mink::ConvexPolyhedron<T>&, const ::mink::Pose<T>&, \
-                                           const ::mink::MddOptions<T>&);
+                                           const ::mink::MddOptions<T>&);                              \
+  EXTERN template ::mink::Result<bool> mink::tryIntersects<T>(                                         \
+      const ::mink::ConvexPolyhedron<T>&, const ::mink::Pose<T>&, const ::mink::ConvexPolyhedron<T>&,  \
+      const ::mink::Pose<T>&, ::mink::MddCache<T>&, const ::mink::MddOptions<T>&);
 
 // mdd/first_contact.hpp
 #define MINK_DETAIL_INSTANTIATE_FIRST_CONTACT(EXTERN, T)                                                   \

@@ -204,15 +204,17 @@ class DkPolygonFill {
 }  // namespace detail
 
 template <class T>
+Error DKHierarchy<T>::checkOptions(const DKHierarchyOptions& options) {
+  if (options.maxRemovedDegree < 3)
+    return Error("DKHierarchyOptions::maxRemovedDegree must be >= 3, got " + std::to_string(options.maxRemovedDegree));
+  if (options.topVertices < 4)
+    return Error("DKHierarchyOptions::topVertices must be >= 4, got " + std::to_string(options.topVertices));
+  return Error();
+}
+
+template <class T>
 DKHierarchy<T>::DKHierarchy(const ConvexPolyhedron<T>& shape, const DKHierarchyOptions& options) {
-  if (options.maxRemovedDegree < 3) {
-    throw InvalidInput("DKHierarchyOptions::maxRemovedDegree must be >= 3, got " +
-                       std::to_string(options.maxRemovedDegree));
-  }
-  if (options.topVertices < 4) {
-    throw InvalidInput("DKHierarchyOptions::topVertices must be >= 4, got " +
-                       std::to_string(options.topVertices));
-  }
+  detail::raiseIf(checkOptions(options));
   detail::DkPolygonFill fill;
   levels_.push_back(triangulatedGraph(shape, fill));
   const std::array<int, 4> anchors = detail::dkAnchors(levels_[0].point);
@@ -409,12 +411,9 @@ bool DKHierarchy<T>::rehull(const Level& cur, const std::vector<int>& kept, cons
   for (int v : kept) keptPoints.push_back(cur.point[v]);
   // With a tolerance, near-degenerate shapes might be judged flat: then the current level
   // stays the top and stopReason() says so (queries remain correct).
-  std::unique_ptr<ConvexPolyhedron<T>> hull;
-  try {
-    hull = std::make_unique<ConvexPolyhedron<T>>(ConvexPolyhedron<T>::fromPoints(keptPoints, HullOptions<T>{tolerance}));
-  } catch (const InvalidInput&) {
-    return false;
-  }
+  Result<ConvexPolyhedron<T>> built = ConvexPolyhedron<T>::tryFromPoints(keptPoints, HullOptions<T>{tolerance});
+  if (!built.ok()) return false;
+  const ConvexPolyhedron<T>* hull = &built.value();
   next = triangulatedGraph(*hull, fill);
   const int h = hull->numVertices();  // <= kept.size() < m: every round shrinks
   next.below.resize(h);

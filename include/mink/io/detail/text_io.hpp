@@ -1,7 +1,7 @@
 // mink/io/detail/text_io.hpp — the token-level helpers shared by the OBJ and OFF
 // readers and writers: locale-independent number parsing and printing for any mink
 // scalar, whitespace tokenising, and the one way a reader reports an error
-// ("<file>:<line>: <problem>", thrown as mink::InvalidInput).
+// ("<file>:<line>: <problem>", an Error that the throwing readers raise as mink::InvalidInput).
 #pragma once
 
 #include <charconv>
@@ -22,9 +22,9 @@ namespace mink {
 namespace io {
 namespace detail {
 
-[[noreturn]] inline void failAt(const std::string& source, std::size_t line,
-                                const std::string& problem) {
-  throw InvalidInput(source + ":" + std::to_string(line) + ": " + problem);
+/// The Error "<source>:<line>: <problem>".
+inline Error errorAt(const std::string& source, std::size_t line, const std::string& problem) {
+  return Error(source + ":" + std::to_string(line) + ": " + problem);
 }
 
 /// Splits `text` at blanks (space, tab, CR, vertical tab, form feed).
@@ -108,32 +108,32 @@ void writeScalar(std::ostream& out, const T& x) {
 
 /// What both writers check before they create a file, so that a refused mesh leaves no
 /// half-written file behind and everything written reads back: finite coordinates,
-/// faces of >= 3 indices, every index in [0, #V). `writer` prefixes the message.
+/// faces of >= 3 indices, every index in [0, #V). The Error names the first offender,
+/// prefixed with `writer`; none if the mesh is writable.
 template <class T>
-void checkWritable(const char* writer, const std::vector<Vec3<T>>& vertices,
-                   const std::vector<std::vector<int>>& faces) {
+[[nodiscard]] Error checkWritable(const char* writer, const std::vector<Vec3<T>>& vertices,
+                                  const std::vector<std::vector<int>>& faces) {
   const long long count = static_cast<long long>(vertices.size());
   for (std::size_t v = 0; v < vertices.size(); ++v) {
     for (int k = 0; k < 3; ++k) {
       if (!ScalarTraits<T>::isFinite(vertices[v][k])) {
-        throw InvalidInput(std::string(writer) + ": vertex " + std::to_string(v) +
-                           " has a non-finite coordinate");
+        return Error(std::string(writer) + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
       }
     }
   }
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (faces[f].size() < 3) {
-      throw InvalidInput(std::string(writer) + ": face " + std::to_string(f) + " has " +
-                         std::to_string(faces[f].size()) + " indices (at least 3 needed)");
+      return Error(std::string(writer) + ": face " + std::to_string(f) + " has " +
+                   std::to_string(faces[f].size()) + " indices (at least 3 needed)");
     }
     for (int index : faces[f]) {
       if (index < 0 || index >= count) {
-        throw InvalidInput(std::string(writer) + ": face " + std::to_string(f) +
-                           " has index " + std::to_string(index) + " outside [0, " +
-                           std::to_string(count) + ")");
+        return Error(std::string(writer) + ": face " + std::to_string(f) + " has index " + std::to_string(index) +
+                     " outside [0, " + std::to_string(count) + ")");
       }
     }
   }
+  return Error();
 }
 
 }  // namespace detail

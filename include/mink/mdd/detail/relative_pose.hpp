@@ -13,18 +13,20 @@
 namespace mink {
 namespace detail {
 
+/// The Error for a pose that is not a rigid placement (non-finite, out of range, not
+/// orthonormal to rounding, a reflection), or none.
 template <class T>
-void checkPose(const Pose<T>& pose, const char* name) {
+[[nodiscard]] Error checkPose(const Pose<T>& pose, const char* name) {
   for (int i = 0; i < 3; ++i) {
     if (!ScalarTraits<T>::isFinite(pose.translation[i]))
-      throw InvalidInput(std::string("mdd: ") + name + ".translation is not finite");
+      return Error(std::string("mdd: ") + name + ".translation is not finite");
     if constexpr (!ScalarTraits<T>::isExact)
       if (absValue(pose.translation[i]) > ScalarTraits<T>::largestCoordinate())
-        throw InvalidInput(std::string("mdd: ") + name +
-                           ".translation is out of range (above ScalarTraits::largestCoordinate())");
+        return Error(std::string("mdd: ") + name +
+                     ".translation is out of range (above ScalarTraits::largestCoordinate())");
     for (int j = 0; j < 3; ++j)
       if (!ScalarTraits<T>::isFinite(pose.rotation(i, j)))
-        throw InvalidInput(std::string("mdd: ") + name + ".rotation is not finite");
+        return Error(std::string("mdd: ") + name + ".rotation is not finite");
   }
   // R^T R - I, symmetric: the six products of columns.
   T tol = T(0);
@@ -34,14 +36,32 @@ void checkPose(const Pose<T>& pose, const char* name) {
   for (int i = 0; i < 3; ++i)
     for (int j = i; j < 3; ++j) {
       const T e = R(0, i) * R(0, j) + R(1, i) * R(1, j) + R(2, i) * R(2, j) - (i == j ? T(1) : T(0));
-      if (absValue(e) > tol) throw InvalidInput(std::string("mdd: ") + name + ".rotation is not orthonormal");
+      if (absValue(e) > tol) return Error(std::string("mdd: ") + name + ".rotation is not orthonormal");
     }
   if (!(pose.rotation.determinant() > T(0)))
-    throw InvalidInput(std::string("mdd: ") + name + ".rotation is a reflection (determinant < 0)");
+    return Error(std::string("mdd: ") + name + ".rotation is a reflection (determinant < 0)");
+  return Error();
 }
 
-/// Q's placement in P's frame (R, t) and P's world-to-local rotation RPt, after checking
-/// both poses; resets the cache's hints when it last served another pair of shapes.
+/// The Error for placed shapes an MDD query cannot take (checkPose on both poses; a shape
+/// too thin for the Gauss-map tests in its scalar type), or none.
+template <class T>
+[[nodiscard]] Error checkPlacedPair(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                                    const Pose<T>& poseQ) {
+  if (Error e = checkPose(poseP, "poseP")) return e;
+  if (Error e = checkPose(poseQ, "poseQ")) return e;
+  for (const auto* X : {&P, &Q})
+    if (!X->edgesResolved())
+      return Error(std::string("mdd: ") + (X == &P ? "P" : "Q") +
+                   " has an edge whose two face normals are opposite to rounding (a dihedral angle "
+                   "below about 64 eps, built with a hull tolerance of 0): too thin for the Gauss-map "
+                   "tests in this scalar type");
+  return Error();
+}
+
+/// Q's placement in P's frame (R, t) and P's world-to-local rotation RPt, for a pair that
+/// passed checkPlacedPair; resets the cache's hints when it last served another pair of
+/// shapes.
 template <class T>
 struct RelativePose {
   Mat3<T> RPt, R;
@@ -51,14 +71,6 @@ struct RelativePose {
 template <class T>
 RelativePose<T> relativePose(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                              const Pose<T>& poseQ, MddCache<T>& cache) {
-  checkPose(poseP, "poseP");
-  checkPose(poseQ, "poseQ");
-  for (const auto* X : {&P, &Q})
-    if (!X->edgesResolved())
-      throw InvalidInput(std::string("mdd: ") + (X == &P ? "P" : "Q") +
-                         " has an edge whose two face normals are opposite to rounding (a dihedral angle "
-                         "below about 64 eps, built with a hull tolerance of 0): too thin for the Gauss-map "
-                         "tests in this scalar type");
   if (cache.shapeP != &P || cache.shapeQ != &Q) {
     cache.faceP = cache.vertexP = cache.vertexQ = -1;
     cache.exitFaces[0] = cache.exitFaces[1] = MddCachedFace{};

@@ -25,54 +25,57 @@ struct TriangleMeshBuilder {
 
   static constexpr const char* kWho = "TriangleMesh::fromMesh";
 
-  [[noreturn]] static void fail(const std::string& what) { throw InvalidInput(std::string(kWho) + ": " + what); }
+  /// The Error "TriangleMesh::fromMesh: <what>".
+  static Error fail(const std::string& what) { return Error(std::string(kWho) + ": " + what); }
   static std::string str(long long i) { return std::to_string(i); }
 
   // Half-edge h = 3 t + i runs from corner i of triangle t to corner i + 1.
   static int next(int h) { return h % 3 == 2 ? h - 2 : h + 1; }
   static int prev(int h) { return h % 3 == 0 ? h + 2 : h - 1; }
 
-  static Mesh build(const std::vector<Vec3<T>>& verts, const std::vector<Tri>& tris) {
+  static Result<Mesh> build(const std::vector<Vec3<T>>& verts, const std::vector<Tri>& tris) {
     const int nV = static_cast<int>(verts.size());
     const int nF = static_cast<int>(tris.size());
-    if (nV == 0) fail("empty input (no vertices)");
-    if (nF == 0) fail("empty input (no triangles)");
-    checkCoordinates(verts, kWho, "vertex");
-    checkIndices(tris, nV);
+    if (nV == 0) return fail("empty input (no vertices)");
+    if (nF == 0) return fail("empty input (no triangles)");
+    if (Error e = checkCoordinates(verts, kWho, "vertex")) return e;
+    if (Error e = checkIndices(tris, nV)) return e;
 
     auto d = std::make_shared<Data>();
     d->vertices = verts;
     d->triangles = tris;
-    std::vector<int> twin = pairHalfEdges(tris);
-    checkVertexFans(tris, twin, nV);
-    checkCollinear(verts, tris);
+    std::vector<int> twin;
+    if (Error e = pairHalfEdges(tris, twin)) return e;
+    if (Error e = checkVertexFans(tris, twin, nV)) return e;
+    if (Error e = checkCollinear(verts, tris)) return e;
     buildEdges(*d, twin);
-    classifyEdges(*d);
-    buildComponents(*d);
+    if (Error e = classifyEdges(*d)) return e;
+    if (Error e = buildComponents(*d)) return e;
     buildStars(*d, twin);
     buildGeometry(*d);
     return Mesh(std::move(d));
   }
 
-  static void checkIndices(const std::vector<Tri>& tris, int nV) {
+  [[nodiscard]] static Error checkIndices(const std::vector<Tri>& tris, int nV) {
     const int nF = static_cast<int>(tris.size());
     for (int t = 0; t < nF; ++t)
       for (int v : tris[t])
         if (v < 0 || v >= nV)
-          fail("triangle " + str(t) + " has vertex index " + str(v) + " out of range [0, " + str(nV) + ")");
+          return fail("triangle " + str(t) + " has vertex index " + str(v) + " out of range [0, " + str(nV) + ")");
     for (int t = 0; t < nF; ++t) {
       const Tri& c = tris[t];
       if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0])
-        fail("triangle " + str(t) + " is degenerate (it repeats vertex " + str(c[0] == c[1] || c[0] == c[2] ? c[0] : c[1]) +
-             ")");
+        return fail("triangle " + str(t) + " is degenerate (it repeats vertex " +
+                    str(c[0] == c[1] || c[0] == c[2] ? c[0] : c[1]) + ")");
     }
+    return Error();
   }
 
-  /// Groups the half-edges by undirected edge and returns each one's twin; rejects edges
+  /// Groups the half-edges by undirected edge and gives each one's twin; rejects edges
   /// not used exactly twice, in opposite directions. Reported in this order over the
   /// whole mesh (an edge with three triangles usually leaves open edges next to it, and
   /// is the cause): non-manifold, open, inconsistently oriented.
-  static std::vector<int> pairHalfEdges(const std::vector<Tri>& tris) {
+  [[nodiscard]] static Error pairHalfEdges(const std::vector<Tri>& tris, std::vector<int>& twin) {
     const int nH = 3 * static_cast<int>(tris.size());
     auto origin = [&](int h) { return tris[h / 3][h % 3]; };
     auto target = [&](int h) { return origin(next(h)); };
@@ -83,7 +86,7 @@ struct TriangleMeshBuilder {
       keys[h] = {(static_cast<std::uint64_t>(a) << 32) | b, h};
     }
     std::sort(keys.begin(), keys.end());
-    std::vector<int> twin(nH, -1);
+    twin.assign(nH, -1);
     int open = -1, inconsistent = -1;
     for (int i = 0; i < nH;) {
       int j = i + 1;
@@ -93,9 +96,8 @@ struct TriangleMeshBuilder {
         std::string list;
         for (int k = i; k < j && k < i + 6; ++k) list += (k > i ? ", " : "") + str(keys[k].second / 3);
         if (j - i > 6) list += ", ...";
-        fail("edge " + str(std::min(origin(h), target(h))) + "-" + str(std::max(origin(h), target(h))) +
-             " is non-manifold (used by " + str(j - i) +
-             " triangles: " + list + ")");
+        return fail("edge " + str(std::min(origin(h), target(h))) + "-" + str(std::max(origin(h), target(h))) +
+                    " is non-manifold (used by " + str(j - i) + " triangles: " + list + ")");
       }
       if (j - i == 1) {
         if (open < 0) open = h;
@@ -111,23 +113,24 @@ struct TriangleMeshBuilder {
       i = j;
     }
     if (open >= 0)
-      fail("edge " + str(origin(open)) + "-" + str(target(open)) + " of triangle " + str(open / 3) +
-           " is open (no other triangle uses it): the mesh is not closed");
+      return fail("edge " + str(origin(open)) + "-" + str(target(open)) + " of triangle " + str(open / 3) +
+                  " is open (no other triangle uses it): the mesh is not closed");
     if (inconsistent >= 0) {
       const int h = inconsistent;
       int other = -1;
       for (int g = 0; g < nH; ++g)
         if (g != h && origin(g) == origin(h) && target(g) == target(h)) other = g;
-      fail("edge " + str(origin(h)) + "->" + str(target(h)) + " is used twice in the same direction (triangles " +
-           str(h / 3) + " and " + str(other / 3) + "): inconsistent orientation");
+      return fail("edge " + str(origin(h)) + "->" + str(target(h)) +
+                  " is used twice in the same direction (triangles " + str(h / 3) + " and " + str(other / 3) +
+                  "): inconsistent orientation");
     }
-    return twin;
+    return Error();
   }
 
   /// Around each vertex, the triangles must form a single fan (a disc): walking from one
   /// outgoing half-edge h to the next, twin(prev(h)), must visit all of them. Every
   /// vertex must be used.
-  static void checkVertexFans(const std::vector<Tri>& tris, const std::vector<int>& twin, int nV) {
+  [[nodiscard]] static Error checkVertexFans(const std::vector<Tri>& tris, const std::vector<int>& twin, int nV) {
     const int nH = static_cast<int>(twin.size());
     std::vector<int> outCount(nV, 0), anyOut(nV, -1);
     for (int h = 0; h < nH; ++h) {
@@ -143,16 +146,18 @@ struct TriangleMeshBuilder {
         ++steps;
       } while (h != anyOut[v] && steps <= outCount[v]);
       if (steps != outCount[v])
-        fail("vertex " + str(v) + " is non-manifold (its triangles form more than one fan)");
+        return fail("vertex " + str(v) + " is non-manifold (its triangles form more than one fan)");
     }
     for (int v = 0; v < nV; ++v)
-      if (outCount[v] == 0) fail("vertex " + str(v) + " is unreferenced (no triangle uses it)");
+      if (outCount[v] == 0) return fail("vertex " + str(v) + " is unreferenced (no triangle uses it)");
+    return Error();
   }
 
-  static void checkCollinear(const std::vector<Vec3<T>>& verts, const std::vector<Tri>& tris) {
+  [[nodiscard]] static Error checkCollinear(const std::vector<Vec3<T>>& verts, const std::vector<Tri>& tris) {
     for (std::size_t t = 0; t < tris.size(); ++t)
       if (properAxis(verts[tris[t][0]], verts[tris[t][1]], verts[tris[t][2]]) < 0)
-        fail("triangle " + str(static_cast<long long>(t)) + " is degenerate (its corners are collinear)");
+        return fail("triangle " + str(static_cast<long long>(t)) + " is degenerate (its corners are collinear)");
+    return Error();
   }
 
   /// Undirected edges numbered in the order of their first half-edge; (a, b) runs along
@@ -184,7 +189,7 @@ struct TriangleMeshBuilder {
   /// triangle's plane (orient3d); when coplanar, by the side of the edge d lies on, in a
   /// projection where the first triangle is proper (orient2d): the side of its own far
   /// corner means the two are folded onto each other (rejected).
-  static void classifyEdges(Data& d) {
+  [[nodiscard]] static Error classifyEdges(Data& d) {
     const int nE = static_cast<int>(d.edgeVertices.size());
     d.edgeKind.resize(nE);
     for (int e = 0; e < nE; ++e) {
@@ -200,15 +205,16 @@ struct TriangleMeshBuilder {
       } else {
         const int k = properAxis(A, B, C);
         if (orient2d(A, B, C, k) == orient2d(A, B, D, k))
-          fail("triangles " + str(t1) + " and " + str(t2) + " are folded onto each other across edge " + str(a) + "-" +
-               str(b) + " (coplanar, on the same side of it: a dihedral angle of 0)");
+          return fail("triangles " + str(t1) + " and " + str(t2) + " are folded onto each other across edge " +
+                      str(a) + "-" + str(b) + " (coplanar, on the same side of it: a dihedral angle of 0)");
         d.edgeKind[e] = EdgeKind::Flat;
       }
     }
+    return Error();
   }
 
   /// Connected components (across edges) and the sign of each one's volume.
-  static void buildComponents(Data& d) {
+  [[nodiscard]] static Error buildComponents(Data& d) {
     const int nF = static_cast<int>(d.triangles.size());
     d.component.assign(nF, -1);
     std::vector<int> members;
@@ -228,11 +234,12 @@ struct TriangleMeshBuilder {
       std::sort(members.begin(), members.end());
       const int sign = signedVolumeSign(d.vertices, d.triangles, members);
       if (sign < 0)
-        fail("component " + str(k) + " (triangle " + str(seed) +
-             " and its neighbours) is oriented inward: its signed volume is negative");
+        return fail("component " + str(k) + " (triangle " + str(seed) +
+                    " and its neighbours) is oriented inward: its signed volume is negative");
       if (sign == 0)
-        fail("component " + str(k) + " (triangle " + str(seed) + " and its neighbours) has zero volume");
+        return fail("component " + str(k) + " (triangle " + str(seed) + " and its neighbours) has zero volume");
     }
+    return Error();
   }
 
   /// Vertex stars in counter-clockwise order seen from outside: after the outgoing
@@ -284,9 +291,15 @@ struct TriangleMeshBuilder {
 }  // namespace detail
 
 template <class T>
+Result<TriangleMesh<T>> TriangleMesh<T>::tryFromMesh(const std::vector<Vec3<T>>& vertices,
+                                                     const std::vector<std::array<int, 3>>& triangles) {
+  return detail::TriangleMeshBuilder<T>::build(vertices, triangles);
+}
+
+template <class T>
 TriangleMesh<T> TriangleMesh<T>::fromMesh(const std::vector<Vec3<T>>& vertices,
                                           const std::vector<std::array<int, 3>>& triangles) {
-  return detail::TriangleMeshBuilder<T>::build(vertices, triangles);
+  return tryFromMesh(vertices, triangles).value();
 }
 
 }  // namespace mink

@@ -39,21 +39,20 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
   using F::width;
 
   // ---------------------------------------------------------------------------------
-  static Poly fromPoints(const std::vector<Vec3<T>>& points, const HullOptions<T>& options) {
+  static Result<Poly> fromPoints(const std::vector<Vec3<T>>& points, const HullOptions<T>& options) {
     const char* who = "fromPoints";
-    if (points.empty()) throw InvalidInput("fromPoints: no points given");
-    if (points.size() < 4)
-      throw InvalidInput("fromPoints: need at least 4 points, got " + std::to_string(points.size()));
-    checkFinite(points, who, "point");
+    if (points.empty()) return Error("fromPoints: no points given");
+    if (points.size() < 4) return Error("fromPoints: need at least 4 points, got " + std::to_string(points.size()));
+    if (Error e = checkFinite(points, who, "point")) return e;
     T m = T(0);
     if constexpr (!ScalarTraits<T>::isExact)
       for (const auto& p : points) m = std::max(m, p.cwiseAbs().maxCoeff());
-    Poly P = atUnitScale(points, m, options, [&](const std::vector<Vec3<T>>& pts, const HullOptions<T>& opt) {
+    Result<Poly> P = atUnitScale(points, m, options, [&](const std::vector<Vec3<T>>& pts, const HullOptions<T>& opt) {
       return build(pts, opt, who);
     });
     // Quickhull decides every side exactly and faces merge only when exactly coplanar;
     // the rescaling is by powers of two, exact both ways on the vertices it keeps.
-    P.exactHull_ = true;
+    if (P.ok()) P.value().exactHull_ = true;
     return P;
   }
 
@@ -64,8 +63,8 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
   /// it, the resolution of doubles at unit scale: a vertex is then its input point
   /// within that (1e-300 in a 1e60 shape), not exactly.
   template <class Build>
-  static Poly atUnitScale(const std::vector<Vec3<T>>& points, const T& m, const HullOptions<T>& options,
-                          Build&& build) {
+  static Result<Poly> atUnitScale(const std::vector<Vec3<T>>& points, const T& m, const HullOptions<T>& options,
+                                  Build&& build) {
     if constexpr (!ScalarTraits<T>::isExact) {
       const int e = m > T(0) ? std::ilogb(m) : 0;
       if (e > kRescaleExponent || e < -kRescaleExponent) {
@@ -74,7 +73,9 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
           for (int k = 0; k < 3; ++k) scaled[i][k] = std::ldexp(points[i][k], -e);
         HullOptions<T> opt = options;
         if (opt.tolerance > T(0)) opt.tolerance = std::ldexp(opt.tolerance, -e);
-        Poly P = build(scaled, opt);
+        Result<Poly> built = build(scaled, opt);
+        if (!built.ok()) return built;
+        Poly& P = built.value();
         // Scaled back exactly: the hull is the exact hull of the scaled copy, whose
         // coordinates below 2^(e - 1074) were rounded to that grid (a 1e-300 coordinate in
         // a 1e60 shape); the vertices are those points, and the planes are theirs.
@@ -84,7 +85,7 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
         P.tolerance_ = std::ldexp(P.tolerance_, e);
         P.extent_ = std::ldexp(P.extent_, e);
         interiorDepth(P);
-        return P;
+        return built;
       }
     }
     return build(points, options);
@@ -93,10 +94,12 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
   /// Beyond 2^±this, fromPoints works on a copy scaled to unit size.
   static constexpr int kRescaleExponent = 64;
 
-  static Poly build(const std::vector<Vec3<T>>& points, const HullOptions<T>& options, const char* who) {
+  static Result<Poly> build(const std::vector<Vec3<T>>& points, const HullOptions<T>& options, const char* who) {
     const T extent = extentOf(points);
-    const T tol = toleranceFor(options, extent, who);
-    const auto tris = Quickhull<T>::run(points, tol);
+    T tol = T(0);
+    if (Error e = toleranceFor(options, extent, who, tol)) return e;
+    std::vector<std::array<int, 3>> tris;
+    if (Error e = Quickhull<T>::run(points, tol, tris)) return e;
     std::vector<Loop> polys;
     polys.reserve(tris.size());
     for (const auto& t : tris) polys.push_back({t[0], t[1], t[2]});
@@ -104,28 +107,28 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
   }
 
   // ---------------------------------------------------------------------------------
-  static Poly fromMesh(const std::vector<Vec3<T>>& verts, const std::vector<Loop>& faces,
-                       const HullOptions<T>& options) {
-    if (verts.empty()) throw InvalidInput("fromMesh: no vertices given");
-    if (faces.empty()) throw InvalidInput("fromMesh: no faces given");
-    checkFinite(verts, "fromMesh", "vertex");
+  static Result<Poly> fromMesh(const std::vector<Vec3<T>>& verts, const std::vector<Loop>& faces,
+                               const HullOptions<T>& options) {
+    if (verts.empty()) return Error("fromMesh: no vertices given");
+    if (faces.empty()) return Error("fromMesh: no faces given");
+    if (Error e = checkFinite(verts, "fromMesh", "vertex")) return e;
     // The scale of the vertices the faces use (bad indices are reported by meshBody).
     T m = T(0);
     if constexpr (!ScalarTraits<T>::isExact)
       for (const Loop& L : faces)
         for (int v : L)
           if (v >= 0 && v < static_cast<int>(verts.size())) m = std::max(m, verts[v].cwiseAbs().maxCoeff());
-    Poly P = atUnitScale(verts, m, options, [&](const std::vector<Vec3<T>>& pts, const HullOptions<T>& opt) {
+    Result<Poly> P = atUnitScale(verts, m, options, [&](const std::vector<Vec3<T>>& pts, const HullOptions<T>& opt) {
       return meshBody(pts, faces, opt);
     });
     // Exact T with the default tolerance (0) validates planarity and convexity with no
     // slack; floating point, or a tolerance given, within the tolerance.
-    P.exactHull_ = ScalarTraits<T>::isExact && P.tolerance_ == T(0);
+    if (P.ok()) P.value().exactHull_ = ScalarTraits<T>::isExact && P.value().tolerance_ == T(0);
     return P;
   }
 
-  static Poly meshBody(const std::vector<Vec3<T>>& verts, const std::vector<Loop>& faces,
-                       const HullOptions<T>& options) {
+  static Result<Poly> meshBody(const std::vector<Vec3<T>>& verts, const std::vector<Loop>& faces,
+                               const HullOptions<T>& options) {
     const char* who = "fromMesh";
     const int nV = static_cast<int>(verts.size());
     const int nF = static_cast<int>(faces.size());
@@ -133,15 +136,15 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
     for (int f = 0; f < nF; ++f) {
       const Loop& L = faces[f];
       if (L.size() < 3)
-        throw InvalidInput("fromMesh: " + faceName(f) + " has " + std::to_string(L.size()) +
+        return Error("fromMesh: " + faceName(f) + " has " + std::to_string(L.size()) +
                            " vertices; a face needs at least 3");
       for (std::size_t i = 0; i < L.size(); ++i) {
         if (L[i] < 0 || L[i] >= nV)
-          throw InvalidInput("fromMesh: " + faceName(f) + " has vertex index " + std::to_string(L[i]) +
+          return Error("fromMesh: " + faceName(f) + " has vertex index " + std::to_string(L[i]) +
                              " out of range [0, " + std::to_string(nV) + ")");
         for (std::size_t j = 0; j < i; ++j)
           if (L[j] == L[i])
-            throw InvalidInput("fromMesh: " + faceName(f) + " repeats vertex " + std::to_string(L[i]));
+            return Error("fromMesh: " + faceName(f) + " repeats vertex " + std::to_string(L[i]));
       }
     }
     // Only referenced vertices count (for extent and tolerance too).
@@ -152,7 +155,8 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
     for (int v = 0; v < nV; ++v)
       if (used[v]) usedPts.push_back(verts[v]);
     const T extent = extentOf(usedPts);
-    const T tol = toleranceFor(options, extent, who);
+    T tol = T(0);
+    if (Error e = toleranceFor(options, extent, who, tol)) return e;
 
     // Closed, consistently oriented 2-manifold.
     std::unordered_map<std::uint64_t, int> owner;
@@ -162,7 +166,7 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
       for (std::size_t i = 0; i < L.size(); ++i) {
         const int a = L[i], b = L[(i + 1) % L.size()];
         if (!owner.emplace(key(a, b), f).second)
-          throw InvalidInput("fromMesh: edge " + std::to_string(a) + "->" + std::to_string(b) +
+          return Error("fromMesh: edge " + std::to_string(a) + "->" + std::to_string(b) +
                              " is used twice in the same direction (faces " +
                              std::to_string(owner.at(key(a, b))) + " and " + std::to_string(f) +
                              "): inconsistent orientation or non-manifold edge");
@@ -174,7 +178,7 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
       for (std::size_t i = 0; i < L.size(); ++i) {
         const int a = L[i], b = L[(i + 1) % L.size()];
         if (!owner.count(key(b, a)))
-          throw InvalidInput("fromMesh: mesh is not closed: edge " + std::to_string(a) + "-" +
+          return Error("fromMesh: mesh is not closed: edge " + std::to_string(a) + "-" +
                              std::to_string(b) + " of " + faceName(f) + " has no partner face");
         ++nE2;
       }
@@ -199,7 +203,7 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
           ++steps;
         } while (w != outEdges[v][0].first && steps <= outEdges[v].size());
         if (steps != outEdges[v].size())
-          throw InvalidInput("fromMesh: vertex " + std::to_string(v) +
+          return Error("fromMesh: vertex " + std::to_string(v) +
                              " is non-manifold (its faces form more than one fan)");
       }
     }
@@ -219,12 +223,12 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
         }
       }
       if (static_cast<int>(queue.size()) != nF)
-        throw InvalidInput("fromMesh: mesh is not connected (" + std::to_string(nF - queue.size()) +
+        return Error("fromMesh: mesh is not connected (" + std::to_string(nF - queue.size()) +
                            " faces are not reachable from face 0)");
     }
     const long long chi = static_cast<long long>(usedPts.size()) - nE + nF;
     if (chi != 2)
-      throw InvalidInput("fromMesh: mesh is not a topological sphere (Euler characteristic " +
+      return Error("fromMesh: mesh is not a topological sphere (Euler characteristic " +
                          std::to_string(chi) + ", expected 2)");
     // Planar, non-degenerate faces; outward orientation; local convexity.
     std::vector<Vec3<T>> n(nF);
@@ -232,11 +236,11 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
       const Loop& L = faces[f];
       const Vec3<T> raw = newell(verts, L);
       if (raw == Vec3<T>::Zero())
-        throw InvalidInput("fromMesh: " + faceName(f) + " is degenerate (zero area)");
+        return Error("fromMesh: " + faceName(f) + " is degenerate (zero area)");
       n[f] = testNormal(raw);
       for (int v : L)
         if (absValue(n[f].dot(verts[v] - verts[L[0]])) > tol)
-          throw InvalidInput("fromMesh: " + faceName(f) + " is not planar (vertex " + std::to_string(v) +
+          return Error("fromMesh: " + faceName(f) + " is not planar (vertex " + std::to_string(v) +
                              " is off its plane)");
     }
     {
@@ -249,7 +253,7 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
         for (const Loop& L : faces)
           for (std::size_t i = 1; i + 1 < L.size(); ++i)
             vol6 += (verts[L[0]] - o).dot((verts[L[i]] - o).cross(verts[L[i + 1]] - o));
-        if (!(vol6 > T(0))) throw InvalidInput(inward);
+        if (!(vol6 > T(0))) return Error(inward);
       } else {
         // The signed volume in floating point has the wrong sign on a needle 1 by 1e-27 by
         // 1e-40 (its terms cancel far above its value). The orientation of a consistently
@@ -285,7 +289,7 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
         if (far >= 0 && depth > T(16) * ScalarTraits<T>::epsilon() * extent) o = side(far);
         for (int v = 0; o == 0 && v < nV; ++v)
           if (used[v] && !onFace[v]) o = side(v);
-        if (!(o < 0)) throw InvalidInput(inward);
+        if (!(o < 0)) return Error(inward);
       }
     }
     // Local convexity at every vertex: each vertex adjacent to v lies on or below every
@@ -305,7 +309,7 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
         for (int f : facesAt[v])
           for (int w : nbrs[v])
             if (n[f].dot(verts[w] - verts[v]) > tol)
-              throw InvalidInput("fromMesh: mesh is not convex (vertex " + std::to_string(w) + " lies above " +
+              return Error("fromMesh: mesh is not convex (vertex " + std::to_string(w) + " lies above " +
                                  faceName(f) + ")");
     }
     return finish(verts, faces, tol, extent);
@@ -315,16 +319,29 @@ struct PolyhedronBuilder : PolyhedronFinish<T> {
 }  // namespace detail
 
 template <class T>
+Result<ConvexPolyhedron<T>> ConvexPolyhedron<T>::tryFromPoints(const std::vector<Vec3<T>>& points,
+                                                               const HullOptions<T>& options) {
+  return detail::PolyhedronBuilder<T>::fromPoints(points, options);
+}
+
+template <class T>
+Result<ConvexPolyhedron<T>> ConvexPolyhedron<T>::tryFromMesh(const std::vector<Vec3<T>>& vertices,
+                                                             const std::vector<std::vector<int>>& faces,
+                                                             const HullOptions<T>& options) {
+  return detail::PolyhedronBuilder<T>::fromMesh(vertices, faces, options);
+}
+
+template <class T>
 ConvexPolyhedron<T> ConvexPolyhedron<T>::fromPoints(const std::vector<Vec3<T>>& points,
                                                     const HullOptions<T>& options) {
-  return detail::PolyhedronBuilder<T>::fromPoints(points, options);
+  return tryFromPoints(points, options).value();
 }
 
 template <class T>
 ConvexPolyhedron<T> ConvexPolyhedron<T>::fromMesh(const std::vector<Vec3<T>>& vertices,
                                                   const std::vector<std::vector<int>>& faces,
                                                   const HullOptions<T>& options) {
-  return detail::PolyhedronBuilder<T>::fromMesh(vertices, faces, options);
+  return tryFromMesh(vertices, faces, options).value();
 }
 
 template <class T>

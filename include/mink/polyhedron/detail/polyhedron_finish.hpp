@@ -74,8 +74,8 @@ struct PolyhedronFinish : PolyhedronGeometry<T> {
             partner = bucket[j].h;
             ++count;
           }
-        if (count != 1) throw InvalidInput("internal: edge without exactly one partner while building");
-        if (org[partner] != tgt[e.h]) throw InvalidInput("internal: inconsistent orientation while building");
+        if (count != 1) internalError("edge without exactly one partner while building");
+        if (org[partner] != tgt[e.h]) internalError("inconsistent orientation while building");
         twin[e.h] = partner;
       }
     }
@@ -253,7 +253,7 @@ struct PolyhedronFinish : PolyhedronGeometry<T> {
       for (int v : L) ++faceCount[v];
     for (Loop& L : faces) {
       L.erase(std::remove_if(L.begin(), L.end(), [&](int v) { return faceCount[v] < 3; }), L.end());
-      if (L.size() < 3) throw InvalidInput("internal: degenerate face after merging coplanar faces");
+      if (L.size() < 3) internalError("degenerate face after merging coplanar faces");
     }
 
     // Compact vertex numbering: order of first appearance in the faces, or on a large
@@ -310,12 +310,12 @@ struct PolyhedronFinish : PolyhedronGeometry<T> {
         P.vertexNeighbor_.push_back(P.heTarget(h));
         P.vertexFace_.push_back(P.heFace_[h]);
         h = P.heTwin_[P.hePrev(h)];
-        if (++guard > nH) throw InvalidInput("internal: broken vertex ring");
+        if (++guard > nH) internalError("broken vertex ring");
       } while (h != h0);
       P.vertexStart_.push_back(static_cast<int>(P.vertexHalfEdge_.size()));
     }
-    if (P.vertexStart_.back() != nH) throw InvalidInput("internal: non-manifold vertex after merging");
-    if (nV - P.numEdges() + nF != 2) throw InvalidInput("internal: Euler characteristic is not 2 after merging");
+    if (P.vertexStart_.back() != nH) internalError("non-manifold vertex after merging");
+    if (nV - P.numEdges() + nF != 2) internalError("Euler characteristic is not 2 after merging");
     facePlanes(P);
     P.tolerance_ = tol;
     P.extent_ = extent;

@@ -34,22 +34,23 @@ struct PolyhedronGeometry {
     return m[0] + m[1] + m[2];
   }
 
-  static T toleranceFor(const HullOptions<T>& options, const T& extent, const char* who) {
+  /// The tolerance the build uses, in `tol`, or the Error for a bad options.tolerance.
+  [[nodiscard]] static Error toleranceFor(const HullOptions<T>& options, const T& extent, const char* who, T& tol) {
     if constexpr (ScalarTraits<T>::isExact) {
+      tol = T(0);
       if (options.tolerance > T(0))
-        throw InvalidInput(std::string(who) + ": a positive tolerance needs an inexact scalar type; "
-                                              "exact scalars decide exactly (tolerance 0)");
-      return T(0);
+        return Error(std::string(who) + ": a positive tolerance needs an inexact scalar type; "
+                                        "exact scalars decide exactly (tolerance 0)");
     } else {
-      if (!ScalarTraits<T>::isFinite(options.tolerance))
-        throw InvalidInput(std::string(who) + ": tolerance is not finite");
-      if (options.tolerance >= T(0)) return options.tolerance;
-      return T(defaults::kHullToleranceFactor) * ScalarTraits<T>::epsilon() * extent;
+      if (!ScalarTraits<T>::isFinite(options.tolerance)) return Error(std::string(who) + ": tolerance is not finite");
+      tol = options.tolerance >= T(0) ? options.tolerance
+                                      : T(defaults::kHullToleranceFactor) * ScalarTraits<T>::epsilon() * extent;
     }
+    return Error();
   }
 
-  static void checkFinite(const std::vector<Vec3<T>>& pts, const char* who, const char* what) {
-    checkCoordinates(pts, who, what);
+  [[nodiscard]] static Error checkFinite(const std::vector<Vec3<T>>& pts, const char* who, const char* what) {
+    return checkCoordinates(pts, who, what);
   }
 
   /// |(b − o) × (c − o)| as len · 2^exp, to compare triangles without underflow (the

@@ -44,12 +44,16 @@ namespace detail {
 template <class T>
 class Quickhull {
  public:
-  /// Triangles (indices into `points`, counter-clockwise seen from outside).
-  static std::vector<std::array<int, 3>> run(const std::vector<Vec3<T>>& points, const T& tol) {
+  /// Triangles (indices into `points`, counter-clockwise seen from outside) in `tris`, or
+  /// the Error "all points coincide / are collinear / are coplanar" (then `tris` is empty).
+  [[nodiscard]] static Error run(const std::vector<Vec3<T>>& points, const T& tol,
+                                 std::vector<std::array<int, 3>>& tris) {
+    tris.clear();
     Quickhull q(points, tol);
-    q.buildSimplex();
+    if (Error e = q.buildSimplex()) return e;
     q.expand();
-    return q.collect();
+    tris = q.collect();
+    return Error();
   }
 
  private:
@@ -142,7 +146,7 @@ class Quickhull {
     return false;
   }
 
-  void buildSimplex() {
+  [[nodiscard]] Error buildSimplex() {
     const int n = static_cast<int>(pts_.size());
     // Lexicographic minimum: always a corner of the hull.
     int i0 = 0;
@@ -179,7 +183,7 @@ class Quickhull {
         i1 = i;
       }
     }
-    if (!(best > tolS * tolS)) throw InvalidInput("fromPoints: all points coincide (within the tolerance)");
+    if (!(best > tolS * tolS)) return Error("fromPoints: all points coincide (within the tolerance)");
     const Vec3<T> dir = diff(i1, i0);
     int i2 = i0;
     best = T(0);
@@ -192,7 +196,7 @@ class Quickhull {
     }
     // distance^2 to the line is d / |dir|^2
     if (!(best > tolS * tolS * dir.squaredNorm()))
-      throw InvalidInput("fromPoints: all points are collinear (within the tolerance)");
+      return Error("fromPoints: all points are collinear (within the tolerance)");
     const Vec3<T> nrm = dir.cross(diff(i2, i0));
     int i3 = i0;
     best = T(0);
@@ -207,13 +211,14 @@ class Quickhull {
       }
     }
     if (!(best * best > tolS * tolS * nrm.squaredNorm()))
-      throw InvalidInput("fromPoints: all points are coplanar (within the tolerance)");
+      return Error("fromPoints: all points are coplanar (within the tolerance)");
     (void)bestSigned;
     // Orient so that i3 lies below the plane of (i0, i1, i2). Decided exactly: every later
     // step trusts this orientation, and the rounded products above can give a sliver
     // simplex (input within rounding of a plane, accepted with tolerance 0: 1e-185 wide,
     // 1e-294 thick) the wrong sign, and the hull came out inside out.
-    const int o = exactSimplex(i0, i1, i2, i3);
+    int o = 0;
+    if (Error e = exactSimplex(i0, i1, i2, i3, o)) return e;
     if (o > 0) std::swap(i1, i2);
     const int f0 = makeFace(i0, i1, i2);
     const int f1 = makeFace(i0, i3, i1);
@@ -230,27 +235,28 @@ class Quickhull {
       if (i == i0 || i == i1 || i == i2 || i == i3) continue;
       assign(i, all);
     }
+    return Error();
   }
 
   /// orient3d(i0, i1, i2, i3), after replacing i2 or i3 where the rounded choices above
   /// made a simplex that is exactly degenerate: i2 exactly on the line i0 i1, or i3 exactly
-  /// in the plane i0 i1 i2 (each replacement an O(n) scan, only for such input). Throws
-  /// when every point is exactly collinear or coplanar with them.
-  int exactSimplex(int i0, int i1, int& i2, int& i3) const {
+  /// in the plane i0 i1 i2 (each replacement an O(n) scan, only for such input), in `o`.
+  /// The Error when every point is exactly collinear or coplanar with them.
+  [[nodiscard]] Error exactSimplex(int i0, int i1, int& i2, int& i3, int& o) const {
     const int n = static_cast<int>(pts_.size());
     if (collinear(i0, i1, i2)) {
       int j = 0;
       while (j < n && collinear(i0, i1, j)) ++j;
-      if (j == n) throw InvalidInput("fromPoints: all points are collinear");
+      if (j == n) return Error("fromPoints: all points are collinear");
       i2 = j;
     }
-    int o = orient3d(pts_[i0], pts_[i1], pts_[i2], pts_[i3]);
+    o = orient3d(pts_[i0], pts_[i1], pts_[i2], pts_[i3]);
     for (int j = 0; o == 0 && j < n; ++j) {
       o = orient3d(pts_[i0], pts_[i1], pts_[i2], pts_[j]);
       if (o != 0) i3 = j;
     }
-    if (o == 0) throw InvalidInput("fromPoints: all points are coplanar");
-    return o;
+    if (o == 0) return Error("fromPoints: all points are coplanar");
+    return Error();
   }
 
   /// Are points a, b, c exactly collinear? Iff their projections on the three coordinate
@@ -405,9 +411,15 @@ class Quickhull {
         alive.push_back(fi);
         firsts.push_back(pts_[faces_[fi].v[0]]);
       }
+    // The Morton box also spans the first corner of the first face (the lexicographic
+    // minimum, a hull vertex), alive or not: the order this builder has always produced,
+    // which the rounding of answers on small shapes follows. Its key is not output.
+    const int extra = static_cast<int>(firsts.size());
+    firsts.push_back(pts_[faces_[0].v[0]]);
     std::vector<std::array<int, 3>> out;
     out.reserve(alive.size());
-    for (int i : mortonOrder(firsts)) out.push_back(faces_[alive[i]].v);
+    for (int i : mortonOrder(firsts))
+      if (i != extra) out.push_back(faces_[alive[i]].v);
     return out;
   }
 
