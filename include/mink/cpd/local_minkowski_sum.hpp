@@ -56,7 +56,6 @@ struct LocalMinkowskiSumOptions {
 
 namespace detail {
 
-
 /// The unit LocalMinkowskiSum works in. The trimming's constructions and filters multiply
 /// up to nine coordinates of M, which over- or underflow far from unit scale. When the
 /// scene (the meshes' coordinates, B's offset from A, the ball) is beyond 2^±W, W =
