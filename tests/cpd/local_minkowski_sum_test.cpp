@@ -339,6 +339,20 @@ TEST(LocalMinkowskiSum, BadInputIsRejected) {
   EXPECT_EQ(again.vertices, vertices);
 }
 
+// The copies the pipeline works on far from unit scale: exact powers of two of the user's
+// mesh, or an Error (never an abort in builds without exceptions) where the copy would not
+// be a valid mesh — here, coordinates that overflow.
+TEST(LocalMinkowskiSum, ScaledWorkingCopiesAreExactOrAnError) {
+  const Mesh A = mesh(mink_test::lBlock());
+  const auto down = mink::detail::scaledMesh(A, 40);
+  ASSERT_TRUE(down.ok()) << down.error().message();
+  ASSERT_EQ(down.value().numVertices(), A.numVertices());
+  for (int v = 0; v < A.numVertices(); ++v) EXPECT_EQ(down.value().vertex(v), V(std::ldexp(1.0, -40) * A.vertex(v)));
+  const auto over = mink::detail::scaledMesh(A, -1100);
+  ASSERT_FALSE(over.ok());
+  EXPECT_NE(over.error().message().find("non-finite"), std::string::npos) << over.error().message();
+}
+
 template <class T>
 double patchArea(const MeshShape& a, const MeshShape& b, const V& tb, const V& c, double r) {
   const auto A = mink::TriangleMesh<T>::fromMesh(a.verticesAs<T>(), a.triangles);

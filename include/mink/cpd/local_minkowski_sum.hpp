@@ -104,9 +104,11 @@ class CpdScale {
   int meshMinExp_ = 0;
 };
 
-/// X with every coordinate multiplied by 2^-e (the same ids for vertices, triangles, edges).
+/// X with every coordinate multiplied by 2^-e (the same ids for vertices, triangles, edges),
+/// or the Error of TriangleMesh::tryFromMesh where the scaled copy is no longer a valid mesh
+/// (products of its coordinates below the range of T).
 template <class T>
-TriangleMesh<T> scaledMesh(const TriangleMesh<T>& X, int e) {
+Result<TriangleMesh<T>> scaledMesh(const TriangleMesh<T>& X, int e) {
   if constexpr (ScalarTraits<T>::isExact) {
     return X;
   } else {
@@ -114,7 +116,7 @@ TriangleMesh<T> scaledMesh(const TriangleMesh<T>& X, int e) {
     std::vector<Vec3<T>> v(static_cast<std::size_t>(X.numVertices()));
     for (int i = 0; i < X.numVertices(); ++i)
       for (int k = 0; k < 3; ++k) v[static_cast<std::size_t>(i)][k] = std::ldexp(X.vertex(i)[k], -e);
-    return TriangleMesh<T>::fromMesh(v, X.triangles());
+    return TriangleMesh<T>::tryFromMesh(v, X.triangles());
   }
 }
 
@@ -168,7 +170,8 @@ class LocalMinkowskiSum {
     if constexpr (!ScalarTraits<T>::isExact) {
       const T reach = std::max({t.cwiseAbs().maxCoeff(), region_.centre.cwiseAbs().maxCoeff(), radius});
       const int e = scale_.exponentFor(reach);
-      if (e != scaleExp_) rescale(e);
+      if (e != scaleExp_)
+        if (Error err = rescale(e)) return err;
     }
     if (scaleExp_ != 0) {
       for (int a = 0; a < 3; ++a) {
@@ -445,10 +448,19 @@ class LocalMinkowskiSum {
   /// Works from now on in units of 2^e (see CpdScale): the meshes scaled, and everything
   /// built on them (overlap test, convex maps, hints) rebuilt. Only when the scene's scale
   /// moves by a factor of 2^32 or more beyond 2^±64; never for a scene near unit scale.
-  void rescale(int e) {
+  /// Where a scaled copy is not a valid mesh, nothing changes and the Error says why.
+  [[nodiscard]] Error rescale(int e) {
+    Result<TriangleMesh<T>> a = detail::scaledMesh(userA_, e);
+    Result<TriangleMesh<T>> b = a.ok() ? detail::scaledMesh(userB_, e) : Result<TriangleMesh<T>>(a.error());
+    if (!b.ok()) {
+      std::string why = b.error().message();
+      if (why.rfind("mink: ", 0) == 0) why.erase(0, 6);
+      return Error("LocalMinkowskiSum::update: the meshes cannot be worked on in units of 2^" + std::to_string(e) +
+                   " (the ball's scale against theirs): " + why);
+    }
     scaleExp_ = e;
-    A_ = detail::scaledMesh(userA_, e);
-    B_ = detail::scaledMesh(userB_, e);
+    A_ = std::move(a.value());
+    B_ = std::move(b.value());
     overlap_ = MeshOverlap<T>(A_, B_, Mat3<T>::Identity(), Vec3<T>::Zero());
     placed_ = false;
     mapA_.reset();
@@ -456,6 +468,7 @@ class LocalMinkowskiSum {
     hintFA_.clear();
     hintFB_.clear();
     hintEA_.clear();
+    return Error();
   }
 
   TriangleMesh<T> userA_, userB_;  // as given (copies share their bodies)
