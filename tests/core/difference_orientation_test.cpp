@@ -53,6 +53,50 @@ TEST(DifferenceOrientation, AgreesWithRationalsOnRandomAndDegenerateInputs) {
   EXPECT_GT(zeros, 100);
 }
 
+// dotSign and det3Sign, the arc test's predicates (gauss_map/arc_intersection.hpp, the EE
+// faces of mdd/detail/pair_frame.hpp): random, integer-grid, tiny and large vectors, and
+// vectors one ulp off orthogonal / off a zero determinant.
+TEST(DifferenceOrientation, DotAndDeterminantSignsAgreeWithRationals) {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::uniform_int_distribution<int> G(-4, 4);
+  int zeros = 0, roundedWrong = 0;
+  for (int k = 0; k < 20000; ++k) {
+    V x, y, z;
+    const int kind = k % 5;
+    for (V* v : {&x, &y, &z}) {
+      if (kind == 0) *v = V(U(rng), U(rng), U(rng));
+      if (kind == 1) *v = V(G(rng), G(rng), G(rng));
+      if (kind == 2) *v = V(U(rng), G(rng), U(rng)) * 1e-300;
+      if (kind == 3) *v = V(U(rng), U(rng), U(rng)) * 1e20;  // y = x × z stays below 2^296
+      if (kind == 4) *v = V(G(rng), G(rng), G(rng)) * 0.1;
+    }
+    if (k % 3 == 0) {
+      // y orthogonal to x in the rounded sense, z a combination of x and y; then an ulp off.
+      y = x.cross(z);
+      z = x * 3.0 - y * 0.5;
+      if (k % 2) z[k % 3] = std::nextafter(z[k % 3], 1e300), y[(k + 1) % 3] = std::nextafter(y[(k + 1) % 3], -1e300);
+    }
+    const Q dot = exact(x).dot(exact(y));
+    const int ds = (dot > 0) - (dot < 0);
+    ASSERT_EQ(mink::dotSign(x, y), ds) << "case " << k;
+    roundedWrong += ((x.dot(y) > 0) - (x.dot(y) < 0)) != ds;
+    const Q det = exact(x).dot(exact(y).cross(exact(z)));
+    const int es = (det > 0) - (det < 0);
+    ASSERT_EQ(mink::det3Sign(x, y, z), es) << "case " << k;
+    if (kind != 2 && kind != 3)  // float: evaluated exactly in double
+      ASSERT_EQ(mink::det3Sign(x.cast<float>().eval(), y.cast<float>().eval(), z.cast<float>().eval()),
+              mink::det3Sign(x.cast<float>().cast<double>().eval(), y.cast<float>().cast<double>().eval(),
+                             z.cast<float>().cast<double>().eval()))
+        << "case " << k;
+    zeros += (ds == 0) + (es == 0);
+  }
+  std::printf("[dotSign / det3Sign] 20000 cases, %d exact zeros, %d rounded dot products of the wrong sign\n", zeros,
+              roundedWrong);
+  EXPECT_GT(zeros, 100);
+  EXPECT_GT(roundedWrong, 0);  // the family reaches where rounding alone would decide wrongly
+}
+
 TEST(DifferenceOrientation, Orient3dIsTheSpecialCase) {
   std::mt19937 rng(2025);
   std::uniform_int_distribution<int> G(-3, 3);

@@ -236,6 +236,7 @@ bool exceeds(const VolumeBounds& vb, int i, int factor, int under) {
 struct Stats {
   long cases = 0, proper = 0, none = 0, degenerate = 0;
   long checkedPlain = 0, uncertain = 0;
+  long plainWrong = 0;  ///< classifyArcs (rounded signs) differs from the exact class
 };
 
 // Checks classifyArcs<T> and classifyArcsFiltered<T> on inputs exactly representable in
@@ -268,6 +269,11 @@ void checkFloating(const std::array<V3<T>, 4>& x, const ScaledInput<T>& in, cons
   if (strong[0] && strong[1] && strong[2] && strong[3]) {
     EXPECT_NE(filtered, ArcIntersection::Uncertain);  // ... and not needlessly pessimistic
   }
+  // The filter and then expansion arithmetic: the exact class on every input.
+  EXPECT_EQ(mink::classifyArcsExact(x[0], x[1], x[2], x[3]), ref.cls);
+  EXPECT_EQ(mink::det3Sign(x[2], x[1], x[0]), ref.sign[0]);
+  EXPECT_EQ(mink::det3Sign(x[1], x[3], x[2]), ref.sign[3]);
+  st.plainWrong += plain != ref.cls;
 }
 
 // classifyArcs<Gmpq> on the exactly converted inputs equals the reference; the contract
@@ -447,9 +453,10 @@ TEST(ArcIntersection, ExactDoubleLongDoubleAgainstReference) {
       checkFloating<long double>(xl, toIntegers(xl), ref, sl);
     }
     std::printf("%-25s cases %6ld (proper %6ld none %6ld degenerate %6ld) | double: plain "
-                "checked %6ld, filter uncertain %6ld | long double: %6ld, %6ld\n",
+                "checked %6ld, filter uncertain %6ld, rounded signs wrong %5ld (exact: 0) | long double: "
+                "%6ld, %6ld\n",
                 f.name.c_str(), sq.cases, sq.proper, sq.none, sq.degenerate, sd.checkedPlain,
-                sd.uncertain, sl.checkedPlain, sl.uncertain);
+                sd.uncertain, sd.plainWrong, sl.checkedPlain, sl.uncertain);
     EXPECT_GT(sq.cases, 0);
   }
 }
@@ -470,8 +477,9 @@ TEST(ArcIntersection, FloatAgainstReference) {
       if (isZero(cross(z.v[0], z.v[1])) || isZero(cross(z.v[2], z.v[3]))) continue;
       checkFloating<float>(x, z, reference(z.v[0], z.v[1], z.v[2], z.v[3]), st);
     }
-    std::printf("float %-25s cases %6ld | plain checked %6ld, filter uncertain %6ld\n",
-                f.name.c_str(), st.cases, st.checkedPlain, st.uncertain);
+    std::printf("float %-25s cases %6ld | plain checked %6ld, filter uncertain %6ld, rounded signs wrong %5ld "
+                "(exact: 0)\n",
+                f.name.c_str(), st.cases, st.checkedPlain, st.uncertain, st.plainWrong);
   }
 }
 
@@ -554,6 +562,10 @@ TEST(ArcIntersection, FilterIsSoundWhenProductsUnderflow) {
     const ArcIntersection f = mink::classifyArcsFiltered(x[0], x[1], x[2], x[3]);
     if (f != ArcIntersection::Uncertain) {
       EXPECT_EQ(f, ref.cls);
+    }
+    // Below 2^-306 the exact stage runs in long double, where it has the range.
+    if (std::numeric_limits<long double>::min_exponent < -4000) {
+      EXPECT_EQ(mink::classifyArcsExact(x[0], x[1], x[2], x[3]), ref.cls);
     }
   }
   EXPECT_GT(certified, 0);

@@ -106,6 +106,41 @@ constexpr int kMddChaseMinDegree = 6;
 /// Unit: multiples of eps. Safe range: 4 .. 1e4.
 constexpr double kMddParallelEdgeFactor = 64.0;
 
+/// MDD, inexact scalars: an edge whose two unit face normals have a cross product shorter
+/// than this (a dihedral angle within about this many radians of 180°) has its Gauss-map
+/// arc's plane taken from the edge direction rather than from its rounded normals, whose
+/// plane is tilted by up to 2 eps / |cross|. Unit: length of the cross product of two unit
+/// normals (sine of the exterior angle). Safe range: 64 eps .. 0.1 (any value is exact
+/// on the numbers used; it only chooses the better-conditioned plane).
+constexpr double kMddSharpEdgeCross = 1.0 / 1024.0;
+
+/// MDD, inexact scalars, witnesses: the barycentric weights of the origin in a triangle of
+/// a contact polygon (mdd/detail/contact_set.hpp) below −this are not rounding of a point
+/// on the triangle's side but the noise of a sliver triangle (three points collinear to
+/// rounding): such weights are repaired (clamped, or the nearest side) or the triangle
+/// gives no location. Unit: barycentric weight (dimensionless). Safe range: 1e-8 .. 0.1.
+constexpr double kMddWitnessWeightSlack = 1.0 / 1024.0;
+
+/// MDD, inexact scalars, witnesses: weights are accepted when their combination of the
+/// polygon's points rebuilds the origin to this many eps times the points' largest
+/// coordinate; otherwise a repaired combination that does better replaces them.
+/// Unit: multiples of eps × coordinate size. Safe range: 4 .. 1e4.
+constexpr double kMddWitnessResidualFactor = 16.0;
+
+/// MDD, inexact scalars, witnesses: negative weights left on a contact polygon of at most
+/// this many points are replaced by the best non-negative combination of one, two or three
+/// of its points (every triple is tried: cubic in this number). Unit: points.
+/// Safe range: 3 .. 64 (larger polygons keep their weights; witnesses stay within the
+/// facet check's slack of M either way).
+constexpr int kMddWitnessRepairMaxPoints = 32;
+
+/// MDD, inexact scalars, witnesses of an EE contact: the line's crossing of the two edges'
+/// parallelogram, in edge parameters (0 .. 1 along each edge), is used when it lies this
+/// far outside [0, 1] at most (then clamped to the edges); farther, the line crossed a
+/// coplanar neighbour of the facet and the facet check's witnesses stay. Unit: edge
+/// parameter (dimensionless). Safe range: 1e-12 .. 1e-3.
+constexpr double kMddEdgeWitnessSlack = 1e-6;
+
 /// MDD, inexact scalars: a face of M that the line of s meets at a sine below this is not
 /// accepted on its certificate alone (the line crossing the face's own polygon, without
 /// a search: cached faces and the faces around the exit-portal estimate); the searches

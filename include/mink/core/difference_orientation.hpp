@@ -109,7 +109,57 @@ int exactOrientDiff(const Vec3<F>& p0, const Vec3<F>& p1, const Vec3<F>& q0, con
   return exactDet3OfExpansions(u, v, w);
 }
 
+/// Exact sign of x · y by expansion arithmetic: three two-products summed exactly.
+/// Exact while no product underflows (every non-zero coordinate at least 2^-306 for
+/// double; smaller ones go to long double where it has the range, as above).
+template <class F>
+int exactDotSign(const Vec3<F>& x, const Vec3<F>& y) {
+  if constexpr (std::is_same<F, double>::value && std::numeric_limits<long double>::min_exponent < -4000) {
+    for (int i = 0; i < 3; ++i)
+      if (tinyCoordinate(x[i]) || tinyCoordinate(y[i])) {
+        using L = long double;
+        return exactDotSign<L>(x.template cast<L>(), y.template cast<L>());
+      }
+  }
+  FixedExpansion<F, 6> acc;
+  for (int i = 0; i < 3; ++i) {
+    F h, l;
+    twoProduct(x[i], y[i], h, l);
+    acc.add(l);
+    acc.add(h);
+  }
+  return acc.sign();
+}
+
 }  // namespace detail
+
+/// Exact sign of the dot product x · y of the given numbers: the rounded sum with its
+/// forward error bound (three roundings per term, plus the absolute error of products
+/// below the normal range), then, when that cannot tell, the exact sum of the
+/// two-products. Float is evaluated exactly in double.
+template <class T>
+int dotSign(const Vec3<T>& x, const Vec3<T>& y) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    return detail::sign(T(x.dot(y)));
+  } else if constexpr (std::is_same<T, float>::value) {
+    return dotSign<double>(x.template cast<double>(), y.template cast<double>());
+  } else {
+    using std::abs;
+    const T p0 = x[0] * y[0], p1 = x[1] * y[1], p2 = x[2] * y[2];
+    const T dot = (p0 + p1) + p2;
+    constexpr T eps = std::numeric_limits<T>::epsilon() / T(2);
+    // γ3 = 3 eps / (1 − 3 eps) < (3 + 16 eps) eps, for each of the three terms.
+    const T bound = (T(3) + T(16) * eps) * eps * (abs(p0) + abs(p1) + abs(p2)) + detail::denormalErrorBound(T(4));
+    if (dot > bound) return 1;
+    if (-dot > bound) return -1;
+    return detail::exactDotSign(x, y);
+  }
+}
+
+/// Exact sign of det[x y z] = x · (y × z) of the given numbers (orientDiff of the three
+/// vectors from the origin: a filter, then expansion arithmetic; exact T directly).
+template <class T>
+int det3Sign(const Vec3<T>& x, const Vec3<T>& y, const Vec3<T>& z);
 
 /// Exact sign of det[p1 − p0, q1 − q0, r1 − r0] (see the header comment): > 0 when the
 /// three difference vectors form a right-handed basis.
@@ -139,6 +189,16 @@ int orientDiff(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& q0, const Ve
     if (det > bound) return 1;
     if (-det > bound) return -1;
     return detail::exactOrientDiff(p0, p1, q0, q1, r0, r1);
+  }
+}
+
+template <class T>
+int det3Sign(const Vec3<T>& x, const Vec3<T>& y, const Vec3<T>& z) {
+  if constexpr (ScalarTraits<T>::isExact) {
+    return detail::sign(T(x.dot(y.cross(z))));
+  } else {
+    const Vec3<T> o = Vec3<T>::Zero();
+    return orientDiff(o, x, o, y, o, z);
   }
 }
 

@@ -31,6 +31,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "mink/core/difference_orientation.hpp"
 #include "mink/core/scalar_traits.hpp"
 #include "mink/core/types.hpp"
 
@@ -203,6 +204,16 @@ ArcIntersection classifyArcsFiltered(const Vec3<T>& a, const Vec3<T>& b, const V
   if (!certain(cba) || !certain(dba) || !certain(adc) || !certain(bdc))
     return ArcIntersection::Uncertain;
   return detail::classifyArcSigns(cba, dba, adc, bdc);
+}
+
+/// classifyArcs decided exactly on the given numbers for every T: each volume's sign by
+/// det3Sign (core/difference_orientation.hpp: the filter above, then expansion arithmetic
+/// when it cannot tell). Never Uncertain; Degenerate exactly when a volume of the given
+/// vectors is zero. Floating-point T: exact while every coordinate is within
+/// ScalarTraits<T>::largestCoordinate() (unit normals always are).
+template <class T>
+ArcIntersection classifyArcsExact(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& d) {
+  return detail::classifyArcSigns(det3Sign(c, b, a), det3Sign(d, b, a), det3Sign(a, d, c), det3Sign(b, d, c));
 }
 
 }  // namespace mink

@@ -150,8 +150,8 @@ class GaussMap {
 
   /// Section VI-B test between arc ep of this map and arc eq of `other` (G(Q), or G(−Q)
   /// when negateOther: its arcs are the negated normals of Q). Both maps in one frame.
-  /// Evaluated in T (exact for exact T). For inexact T and a certified answer, pass the
-  /// endpoints (arc / rotatedArc) to classifyArcsFiltered and redo Uncertain pairs exactly.
+  /// Evaluated in T (exact for exact T). For inexact T and the exact answer on the same
+  /// numbers, pass the endpoints (arc / rotatedArc) to classifyArcsExact.
   ArcIntersection edgeArcsIntersect(int ep, const GaussMap& other, int eq, bool negateOther) const {
     const ArcRef a = arc(ep);
     const ArcRef b = other.arc(eq);

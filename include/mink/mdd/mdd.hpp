@@ -20,8 +20,9 @@
 //
 // The steps live in detail/: relative_pose.hpp (poses), centre_of_duality.hpp (step 1),
 // exit_face.hpp with exit_portal.hpp, search_fv.hpp and search_ee.hpp (step 2),
-// facet_check.hpp (step 3), mdd_fallbacks.hpp (grazing lines and the chord of M), and
-// mdd_driver.hpp, which runs them in order for one query.
+// facet_check.hpp (step 3), mdd_fallbacks.hpp (grazing lines and the chord of M),
+// cached_exit.hpp (frame coherence: the last query's faces), and mdd_driver.hpp, which
+// runs them in order for one query.
 #pragma once
 
 #include <cmath>

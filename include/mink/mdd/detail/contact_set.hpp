@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "mink/core/defaults.hpp"
 #include "mink/core/orientation.hpp"
 #include "mink/mdd/detail/pair_frame.hpp"
 
@@ -154,8 +155,8 @@ bool triangleLocation(const std::pair<std::pair<T, T>, int>& pa, const std::pair
     const std::pair<T, T>* abc[3] = {&a, &b, &c};
     const T size = std::max({absValue(a.first), absValue(a.second), absValue(b.first), absValue(b.second),
                              absValue(c.first), absValue(c.second)});
-    const T R = T(16) * ScalarTraits<T>::epsilon() * size;
-    const T slackW = T(1) / T(1024);
+    const T R = T(defaults::kMddWitnessResidualFactor) * ScalarTraits<T>::epsilon() * size;
+    const T slackW = T(defaults::kMddWitnessWeightSlack);
     const bool negative = loc.weight[0] < -slackW || loc.weight[1] < -slackW || loc.weight[2] < -slackW;
     T r = negative ? std::numeric_limits<T>::infinity() : combinationSize(loc, abc);
     if (!(r <= R)) {
@@ -207,7 +208,7 @@ bool fanLocate(const std::vector<std::pair<std::pair<T, T>, int>>& h, int side, 
     // A sliver triangle (a face seen almost edge-on along s) gives weights that rounding
     // has thrown far outside [0, 1]: no reliable location, so no hit (the caller's
     // search and its tolerant check take over).
-    const T slackW = T(1) / T(1024);
+    const T slackW = T(defaults::kMddWitnessWeightSlack);
     if (loc.weight[1] < -slackW || loc.weight[2] < -slackW || loc.weight[0] < -slackW) return false;
     return true;
   }
@@ -276,15 +277,16 @@ bool locateOrigin2Strict(std::vector<std::pair<std::pair<T, T>, int>>& pts,
 /// non-negative (a sliver fan triangle: points nearly collinear, the weights 1 + 6e-8,
 /// -1.7e-7, 1.1e-7), the non-negative combination of a single point, a pair or a triple
 /// of `pts` that rebuilds the origin best replaces it if it rebuilds it as well (or to
-/// 16 eps of the points' size). The weights feed the witnesses: in the sliver above the
-/// edges of P and Q behind it were near-parallel, the combination cancelled in M but left
-/// witnessP 1e-7 beyond the end of P's edge. Small sets only (at most 32 points: 5k
-/// triples); otherwise, and if nothing rebuilds the origin that well, loc is kept.
+/// defaults::kMddWitnessResidualFactor eps of the points' size). The weights feed the
+/// witnesses: a sliver with near-parallel edges of P and Q behind it cancels in M but can
+/// put a witness beyond the end of its edge. Small sets only
+/// (defaults::kMddWitnessRepairMaxPoints: every triple is tried); otherwise, and if nothing
+/// rebuilds the origin that well, loc is kept.
 template <class T>
 void preferNonNegative(const std::vector<std::pair<std::pair<T, T>, int>>& pts, OriginLocation<T>& loc) {
   if (!(loc.weight[0] < T(0) || loc.weight[1] < T(0) || loc.weight[2] < T(0))) return;
   const std::size_t n = pts.size();
-  if (n > 32) return;
+  if (n > static_cast<std::size_t>(defaults::kMddWitnessRepairMaxPoints)) return;
   auto coords = [&](int id) -> const std::pair<T, T>* {
     for (const auto& p : pts)
       if (p.second == id) return &p.first;
@@ -295,7 +297,8 @@ void preferNonNegative(const std::vector<std::pair<std::pair<T, T>, int>>& pts, 
     if (!(at[i] = coords(loc.id[i]))) return;
   T size = T(0);
   for (const auto& p : pts) size = std::max({size, absValue(p.first.first), absValue(p.first.second)});
-  const T bound = std::max(combinationSize(loc, at), T(16) * ScalarTraits<T>::epsilon() * size);
+  const T bound =
+      std::max(combinationSize(loc, at), T(defaults::kMddWitnessResidualFactor) * ScalarTraits<T>::epsilon() * size);
   OriginLocation<T> best;
   T bestR = std::numeric_limits<T>::infinity();
   auto consider = [&](const OriginLocation<T>& c, const std::pair<T, T>* const* q) {

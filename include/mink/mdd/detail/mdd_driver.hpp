@@ -1,6 +1,6 @@
 // mink/mdd/detail/mdd_driver.hpp — one mdd() query as named steps (MDD-DUAL, Choi et al.):
 //   1. cached(): the faces that ended the last query of the pair, if they still bound the
-//      line (frame coherence, section VI-E);
+//      line (frame coherence, section VI-E; detail/cached_exit.hpp);
 //   2. the centre of duality (section IV-A, detail/centre_of_duality.hpp): the line misses
 //      M (noContact), grazes it (fromGrazing), or c strictly inside M is found;
 //   3. fromInterior(): the exit face towards the origin first (detail/exit_face.hpp); if
@@ -15,6 +15,8 @@
 #include <cmath>
 #include <limits>
 
+#include "mink/core/defaults.hpp"
+#include "mink/mdd/detail/cached_exit.hpp"
 #include "mink/mdd/detail/centre_of_duality.hpp"
 #include "mink/mdd/detail/mdd_fallbacks.hpp"
 #include "mink/mdd/detail/relative_pose.hpp"
@@ -228,7 +230,7 @@ class MddDriver {
           const T lambda = N.dot(d.cross(dqu)) / n2, mu = -N.dot(dpu.cross(d)) / n2;
           // Only where the line crosses this parallelogram (not a coplanar neighbour of
           // the facet that the facet check accepted).
-          const T slack = T(1e-6);
+          const T slack = T(defaults::kMddEdgeWitnessSlack);
           if (lambda >= -slack && lambda <= T(1) + slack && mu >= -slack && mu <= T(1) + slack) {
             res_.witnessP = p0 + std::min(T(1), std::max(T(0), lambda)) * dp;
             res_.witnessQ = q0 + std::min(T(1), std::max(T(0), mu)) * dq;
@@ -274,77 +276,17 @@ class MddDriver {
     res_.witnessQ = toWorld(check_.witnessQ());
   }
 
-  /// Frame coherence: if the faces that ended the last query still bound the line (each
-  /// a supporting plane of M whose facet the line crosses), they give the answer (true).
-  /// A kept face that alone puts the line's stretch in M on one side of the origin (the
-  /// −s exit ahead, t > 0, or the +s exit behind, t < 0) answers a separated query by
-  /// itself: it is certified first, and the other face only where it does not.
+  /// Frame coherence (detail/cached_exit.hpp): the faces that ended the last query, if
+  /// they still bound the line, give the answer (true).
   bool cached() {
-    MFace<T> kept[2];
-    T tk[2] = {T(0), T(0)};
-    int order[2] = {0, 1};
-    for (int i = 0; i < 2; ++i) {
-      kept[i] = search_.rebuild(cache_.exitFaces[i]);
-      if (!kept[i].valid()) continue;
-      const T ns = kept[i].N.dot(sl_);
-      if (ns == T(0)) {
-        kept[i] = MFace<T>();
-        continue;
-      }
-      tk[i] = kept[i].k / ns;
-    }
-    auto separates = [&](int i) {
-      if (!kept[i].valid()) return false;
-      const bool isHi = kept[i].N.dot(sl_) > T(0);
-      return isHi ? tk[i] < T(0) : tk[i] > T(0);
-    };
-    if (!separates(0) && separates(1)) std::swap(order[0], order[1]);
-    MFace<T> lo, hi;
-    T tlo = T(0), thi = T(0);
-    const MFace<T>* witnessed = nullptr;  // the face whose witnesses check_ holds
-    for (int i : order) {
-      const MFace<T>& m = kept[i];
-      if (!m.valid()) continue;
-      const bool isHi = m.N.dot(sl_) > T(0);
-      if (isHi ? hi.valid() : lo.valid()) continue;
-      (m.type == MddFaceType::FV ? res_.visitedFV : m.type == MddFaceType::VF ? res_.visitedVF : res_.visitedEE) += 1;
-      witnessed = nullptr;
-      if (!check_.certifies(m)) continue;
-      if (check_.lineInPlane(m)) {
-        lo = hi = MFace<T>();  // a grazing line: the cold path decides
-        break;
-      }
-      (isHi ? hi : lo) = m;
-      (isHi ? thi : tlo) = tk[i];
-      witnessed = isHi ? &hi : &lo;
-      if (separates(i)) break;  // the other end is not needed
-    }
-    const MFace<T>* answer = nullptr;
-    if (lo.valid() && tlo > T(0)) {
-      answer = &lo;  // the whole line's stretch in M lies ahead: separated
-      res_.status = MddStatus::Separated;
-    } else if (hi.valid() && thi < T(0)) {
-      answer = &hi;
-      res_.status = MddStatus::Separated;
-    } else if (lo.valid() && hi.valid()) {
-      answer = absValue(tlo) < absValue(thi) ? &lo : &hi;  // tie: +s
-      res_.status = MddStatus::Penetrating;
-    }
-    if (answer) {
-      if (answer != witnessed) check_.certifies(*answer);  // its witnesses
-      res_.faceType = answer->type;
-      res_.featureP = answer->a;
-      res_.featureQ = answer->b;
-      res_.normal = unitOrExact(Vec3<T>(RPt_.transpose() * answer->N));
-      res_.witnessP = toWorld(check_.witnessP());
-      res_.witnessQ = toWorld(check_.witnessQ());
-      res_.fromCache = true;
-      res_.path = MddPath::Cache;
-      finish(answer == &lo ? tlo : thi);
-      return true;
-    }
-    res_.visitedFV = res_.visitedVF = res_.visitedEE = 0;
-    return false;
+    const CachedExit<T> c = cachedExit(search_, cache_, sl_, res_);
+    if (!c.face.valid()) return false;
+    record(c.face);
+    res_.status = c.status;
+    res_.fromCache = true;
+    res_.path = MddPath::Cache;
+    finish(c.parameter);
+    return true;
   }
 
   /// The last resort (inexact T) when a search cannot answer: no face passed its facet

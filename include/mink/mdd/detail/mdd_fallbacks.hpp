@@ -54,13 +54,18 @@ class MddFallbacks {
     return !(tlo > thi);
   }
 
+  /// A slack no distance between points of M exceeds (every point of M lies within the
+  /// scene size of the origin in P's frame: a slack of twice that accepts any point): the
+  /// nearest point is wanted, however far.
+  T anyDistance() const { return T(4) * F_.sceneSize(); }
+
   /// Witnesses on the facet of M in face m's plane nearest the line (chord()'s faces,
   /// which the line may miss by rounding).
   void nearestWitnesses(const MFace<T>& m) {
     if (check_.facetHit(m)) return;
     // facetHit left the facet's support sets in setP / setQ: the point of their
     // difference's hull nearest the line (any slack above the scene's size accepts it).
-    check_.hitSets(T(4) * F_.sceneSize());
+    check_.hitSets(anyDistance());
   }
 
   /// Witnesses for a contact point X (frame of P) that the chord's face does not reach:
@@ -77,7 +82,7 @@ class MddFallbacks {
     search_.forEachFace([&](const MFace<T>& m) {
       const T n = FacetCheck<T>::norm(m.N);
       if (!(n > T(0)) || !(check_.slackUnits(T(absValue(T(m.N.dot(X) - m.k)) / n)) < best)) return;  // its plane is farther
-      if (!check_.facetSets(m) || !check_.witnessesAt(X, m.N, T(4) * F_.sceneSize())) return;
+      if (!check_.facetSets(m) || !check_.witnessesAt(X, m.N, anyDistance())) return;
       const T dist = FacetCheck<T>::norm(check_.inUnits(Vec3<T>(check_.witnessP() - check_.witnessQ() - X)));
       if (dist < best) best = dist, nearest = m, bestP = check_.witnessP(), bestQ = check_.witnessQ();
     });

@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "mink/core/defaults.hpp"
+#include "mink/core/difference_orientation.hpp"
 #include "mink/gauss_map/arc_intersection.hpp"
 #include "mink/hierarchy/dk_hierarchy.hpp"
 #include "mink/mdd/mdd_types.hpp"
@@ -39,6 +40,10 @@ struct MFace {
 template <class T>
 class PairFrame {
  public:
+  /// Lengths within 2^±kUnitBand are "of unit order": products of three of them neither
+  /// overflow nor underflow (a sixteenth of the exponent range of T). Inexact T only.
+  static constexpr int kUnitBand = std::numeric_limits<T>::max_exponent / 16;
+
   PairFrame(const ConvexPolyhedron<T>& P, const ConvexPolyhedron<T>& Q, const Mat3<T>& R,
             const Vec3<T>& t, bool useHierarchy)
       : P_(P), Q_(Q), R_(R), t_(t), useHierarchy_(useHierarchy) {
@@ -49,12 +54,29 @@ class PairFrame {
     C_.col(1) = R.col(2).cross(R.col(0));
     C_.col(2) = R.col(0).cross(R.col(1));
     if constexpr (!ScalarTraits<T>::isExact) {
+      // The arc test's filter (ee()): a volume det[x y z] of three normals, evaluated as
+      // x · (y × z), is off by at most γ5 · Σ|x_i| (|y_j z_k| + |y_k z_j|) <= γ5 √2 |x||y||z|
+      // (Cauchy–Schwarz), plus 4 (|x|_1 + 2) min_normal from products below the normal
+      // range (arc_intersection.hpp, filteredSign). P's normals are unit to rounding; Q's
+      // are C n with |C n| <= |C|_F |n|. 12 u > γ5 √2 with room for the rounding of the
+      // norms (u the unit roundoff).
+      using std::sqrt;
+      const T u = std::numeric_limits<T>::epsilon() / T(2);
+      const T nP = T(1) + T(16) * u;
+      const T nQ = sqrt(C_.squaredNorm()) * (T(1) + T(16) * u);
+      arcBoundPPQ_ = T(12) * u * nP * nP * nQ + detail::denormalErrorBound(T(32));
+      arcBoundPQQ_ = T(12) * u * nP * nQ * nQ + detail::denormalErrorBound(T(32));
+      // An edge plane (arcFrame()) is an edge scaled to |e|_max in [1, 2), so |e| < 3.5;
+      // its volumes are dot products x · e, off by at most γ3 |x||e| < 4 u · 3.5 |x|.
+      edgeBoundP_ = T(14) * u * nQ + detail::denormalErrorBound(T(32));  // c · e_P, d · e_P
+      edgeBoundQ_ = T(14) * u * nP + detail::denormalErrorBound(T(32));  // a · e_Q, b · e_Q
+      unitLo_ = detail::timesPowerOfTwo(T(1), -kUnitBand);
+      unitHi_ = detail::timesPowerOfTwo(T(1), kUnitBand);
       scene_ = P.extent() + Q.extent() + t.template lpNorm<1>();
       if (scene_ > T(0) && ScalarTraits<T>::isFinite(scene_)) {
         using std::ilogb;
         const int e = ilogb(scene_);
-        const int band = std::numeric_limits<T>::max_exponent / 16;
-        unitExp_ = (e >= -band && e <= band) ? 0 : e;
+        unitExp_ = (e >= -kUnitBand && e <= kUnitBand) ? 0 : e;
       }
     }
   }
@@ -89,8 +111,8 @@ class PairFrame {
   }
   /// Does either shape have a hierarchy that the queries may use?
   bool hasHierarchy() const { return useHierarchy_ && (hierarchyOf(P_) || hierarchyOf(Q_)); }
-  /// Inexact T: for a scene far from unit order (size beyond 2^±64 in double, 2^±8 in
-  /// float: a sixteenth of the exponent range), the exponent e of
+  /// Inexact T: for a scene far from unit order (size beyond 2^±kUnitBand: 2^±64 in
+  /// double, 2^±8 in float, a sixteenth of the exponent range), the exponent e of
   /// its size, so that coordinates of M taken in units of 2^e are of unit order; else 0.
   /// Tests that multiply two or three coordinates of M (the 2-D and 3-D portals) work in
   /// those units: a scene of 1e-224 gave products of 1e-448, zero in double, and every
@@ -135,6 +157,68 @@ class PairFrame {
     return m;
   }
 
+  /// Inexact T: n = b × a for the unit normals a, b of P's edge ep; where it is shorter
+  /// than kMddSharpEdgeCross, n becomes the edge itself, scaled to unit order and oriented
+  /// as n (true returned). The plane of a sharp edge's arc (normals nearly opposite) or a
+  /// flat edge's (nearly equal) through two rounded normals is tilted by up to
+  /// 2 eps / |n| (4e-6 rad for a sheet 5e-11 thick: the arc of an edge of Q passed 1e-11
+  /// from one of its normals, the arc test was then exact on normals that misplace the arc,
+  /// and M lost the facet the line left by); the edge is its exact normal. The orientation
+  /// is that of n, whose length edgesResolved() keeps above 64 eps, so that its sign
+  /// against the edge is never in doubt. The volumes' signs and the crossing's direction
+  /// do not depend on the planes' lengths.
+  bool edgePlaneP(Vec3<T>& n, int ep) const {
+    if constexpr (!ScalarTraits<T>::isExact) {
+      if (n.squaredNorm() < T(defaults::kMddSharpEdgeCross) * T(defaults::kMddSharpEdgeCross)) return edgeAsPlaneP(n, ep);
+    }
+    (void)n, (void)ep;
+    return false;
+  }
+  /// As edgePlaneP, for Q's edge eq (n = d × c of its normals in P's frame).
+  bool edgePlaneQ(Vec3<T>& n, int eq) const {
+    if constexpr (!ScalarTraits<T>::isExact) {
+      if (n.squaredNorm() < T(defaults::kMddSharpEdgeCross) * T(defaults::kMddSharpEdgeCross)) return edgeAsPlaneQ(n, eq);
+    }
+    (void)n, (void)eq;
+    return false;
+  }
+  bool edgeAsPlaneP(Vec3<T>& n, int ep) const {
+    const auto v = P_.edgeVertices(ep);
+    return orientAlong(n, unitOrder(Vec3<T>(P_.vertex(v.second) - P_.vertex(v.first))));
+  }
+  bool edgeAsPlaneQ(Vec3<T>& n, int eq) const {
+    const auto v = Q_.edgeVertices(eq);
+    return orientAlong(n, unitOrder(Vec3<T>(R_ * Vec3<T>(Q_.vertex(v.second) - Q_.vertex(v.first)))));
+  }
+  static bool orientAlong(Vec3<T>& n, const Vec3<T>& e) {
+    const T side = e.dot(n);
+    if (side == T(0)) return false;
+    n = side > T(0) ? e : Vec3<T>(-e);
+    return true;
+  }
+
+  /// ee()'s four signs where the filter cannot tell, exact (dotSign / det3Sign), packed as
+  /// 2 bits each (sign + 1: cba, dba, adc, bdc from the low bits). Out of line and from the
+  /// edge ids alone: rare, and large, so that ee()'s common path keeps its registers.
+#if defined(__GNUC__)
+  __attribute__((noinline, cold))
+#endif
+  int exactArcSigns(int ep, int eq) const {
+    const Vec3<T>& a = P_.faceNormal(P_.edgeFaces(ep).first);
+    const Vec3<T>& b = P_.faceNormal(P_.edgeFaces(ep).second);
+    const Vec3<T> c = qNormal(Q_.edgeFaces(eq).first), d = qNormal(Q_.edgeFaces(eq).second);
+    Vec3<T> nP = b.cross(a), nQ = d.cross(c);
+    const bool eP = edgePlaneP(nP, ep), eQ = edgePlaneQ(nQ, eq);
+    const ArcVolumes<T> raw{c.dot(nP), d.dot(nP), a.dot(nQ), b.dot(nQ)};
+    const T bP = eP ? edgeBoundP_ : arcBoundPPQ_, bQ = eQ ? edgeBoundQ_ : arcBoundPQQ_;
+    int s[4] = {detail::sign(raw.cba), detail::sign(raw.dba), detail::sign(raw.adc), detail::sign(raw.bdc)};
+    if (!(absValue(raw.cba) > bP)) s[0] = eP ? dotSign(c, nP) : det3Sign(c, b, a);
+    if (!(absValue(raw.dba) > bP)) s[1] = eP ? dotSign(d, nP) : det3Sign(d, b, a);
+    if (!(absValue(raw.adc) > bQ)) s[2] = eQ ? dotSign(a, nQ) : det3Sign(a, d, c);
+    if (!(absValue(raw.bdc) > bQ)) s[3] = eQ ? dotSign(b, nQ) : det3Sign(b, d, c);
+    return (s[0] + 1) | ((s[1] + 1) << 2) | ((s[2] + 1) << 4) | ((s[3] + 1) << 6);
+  }
+
   MFace<T> vf(int fq, int& hintP) const {
     MFace<T> m;
     m.type = MddFaceType::VF;
@@ -149,54 +233,49 @@ class PairFrame {
   /// The EE face of edges ep (of P) and eq (of Q) if their arcs on G(P) and G(−Q) cross
   /// properly; otherwise an invalid face. Touching arcs (Degenerate) are skipped: a facet
   /// of M whose support sets are not two crossing edges is an FV or VF face, or a span of
-  /// them, which the facet check in mdd.hpp covers.
+  /// them, which the facet check covers.
+  /// The crossing is decided by the exact signs of the four volumes of the given normals
+  /// (arc_intersection.hpp): the rounded volumes where they exceed the filter's bound (made
+  /// once per pair), det3Sign / dotSign on the same vectors where they do not.
   MFace<T> ee(int ep, int eq) const {
     MFace<T> m;
-    const auto fp = P_.edgeFaces(ep);
-    const auto fq = Q_.edgeFaces(eq);
-    const Vec3<T>& a = P_.faceNormal(fp.first);
-    const Vec3<T>& b = P_.faceNormal(fp.second);
-    const Vec3<T> c = qNormal(fq.first);
-    const Vec3<T> d = qNormal(fq.second);
+    const Vec3<T>& a = P_.faceNormal(P_.edgeFaces(ep).first);
+    const Vec3<T>& b = P_.faceNormal(P_.edgeFaces(ep).second);
+    const Vec3<T> c = qNormal(Q_.edgeFaces(eq).first), d = qNormal(Q_.edgeFaces(eq).second);
     const auto vp = P_.edgeVertices(ep);
     const auto vq = Q_.edgeVertices(eq);
     // The four volumes of arc_intersection.hpp: det[c b a] = c · (b × a) and
-    // det[a d c] = a · (d × c), the arcs' great-circle planes taken once each.
+    // det[a d c] = a · (d × c), the arcs' great-circle planes taken once each (or the
+    // edges themselves: edgePlaneP / edgePlaneQ).
     Vec3<T> nP = b.cross(a), nQ = d.cross(c);
+    const bool eP = edgePlaneP(nP, ep), eQ = edgePlaneQ(nQ, eq);
+    const ArcVolumes<T> raw{c.dot(nP), d.dot(nP), a.dot(nQ), b.dot(nQ)};
+    int sCba = detail::sign(raw.cba), sDba = detail::sign(raw.dba);
+    int sAdc = detail::sign(raw.adc), sBdc = detail::sign(raw.bdc);
     if constexpr (!ScalarTraits<T>::isExact) {
-      // A sharp edge (a sheet 5e-11 thick: its two face normals 5e-11 from opposite) has
-      // a cross product of 5e-11 whose direction is off by 2 eps / 5e-11 = 4e-6 rad; the
-      // arc of Q's edge passed 1e-11 from a face normal of P, so the EE faces there were
-      // decided by noise and M lost the facet the line left by (witnesses 0.7 off P).
-      // The edge itself is the exact normal of that plane (its orientation from the cross
-      // product, whose length edgesResolved() keeps above 64 eps): used where the cross
-      // product is below 2^-10, so that the planes are off by at most 2^11 eps.
-      // The volumes' signs and the crossing's direction do not depend on the planes'
-      // lengths (the edge is scaled to unit order, as below).
-      const T sharp = T(1) / T(1048576);  // (2^-10)^2
-      if (nP.squaredNorm() < sharp) {
-        const Vec3<T> e = unitOrder(Vec3<T>(P_.vertex(vp.second) - P_.vertex(vp.first)));
-        const T side = e.dot(nP);
-        if (side != T(0)) nP = side > T(0) ? e : Vec3<T>(-e);
-      }
-      if (nQ.squaredNorm() < sharp) {
-        const Vec3<T> e = unitOrder(Vec3<T>(R_ * Vec3<T>(Q_.vertex(vq.second) - Q_.vertex(vq.first))));
-        const T side = e.dot(nQ);
-        if (side != T(0)) nQ = side > T(0) ? e : Vec3<T>(-e);
+      // The common case costs four comparisons: every volume beyond the filter's bound.
+      const T bP = eP ? edgeBoundP_ : arcBoundPPQ_, bQ = eQ ? edgeBoundQ_ : arcBoundPQQ_;
+      const bool certain = (absValue(raw.cba) > bP) & (absValue(raw.dba) > bP) & (absValue(raw.adc) > bQ) &
+                           (absValue(raw.bdc) > bQ);
+      if (!certain) {
+        const int packed = exactArcSigns(ep, eq);
+        sCba = (packed & 3) - 1, sDba = ((packed >> 2) & 3) - 1;
+        sAdc = ((packed >> 4) & 3) - 1, sBdc = ((packed >> 6) & 3) - 1;
       }
     }
-    const ArcVolumes<T> vol = ArcVolumes<T>{c.dot(nP), d.dot(nP), a.dot(nQ), b.dot(nQ)}.negatedSecondArc();
-    if (classifyArcs(vol) != ArcIntersection::Proper) return m;
+    // G(−Q)'s arc is (−c)–(−d): the first two volumes change sign (negatedSecondArc).
+    if (detail::classifyArcSigns(-sCba, -sDba, sAdc, sBdc) != ArcIntersection::Proper) return m;
+    const ArcVolumes<T> vol = raw.negatedSecondArc();
     // The crossing direction is a positive combination of a and b (arc_intersection.hpp).
     const Vec3<T> dir = arcIntersectionDirection(a, b, vol);
     if constexpr (!ScalarTraits<T>::isExact) {
-      // The same crossing seen on the arc of −Q, −(|dba| c + |cba| d), must be that point
-      // and not its antipode. The sign test of arc_intersection.hpp decides this from the
-      // signs alone, which rounding sets when the four normals are nearly on one great
-      // circle (a flat edge of Q, its normals 1e-16 apart, in the plane of P's arc): an
-      // EE face was then declared whose arcs are 180 degrees apart, with a plane through
-      // the origin, and intersects() said false for shapes overlapping by 2e25. Both
-      // points are accurate in direction even there.
+      // The signs are exact, so the arcs do cross; but dir's weights are the rounded
+      // volumes, which carry no digit where the four normals are nearly on one great
+      // circle (a flat edge of Q in the plane of P's arc), and dir may then be anywhere
+      // on the arc a–b. It orients the face's normal below, so it must agree with the
+      // crossing seen on the arc of −Q, −(|dba| c + |cba| d); both are accurate in
+      // direction when the arcs meet at a clear angle. Where they disagree the face is
+      // not declared: its plane could not be oriented.
       const Vec3<T> onQ = -(absValue(vol.dba) * c + absValue(vol.cba) * d);
       if (!(onQ.dot(dir) > T(0))) return m;
     }
@@ -212,10 +291,10 @@ class PairFrame {
       // such shapes existed; 1e-200-long edges underflowed the same way.
       // Only outside 2^±64 (a test of two maxima on the hot path of SEARCH-EE): the ratio
       // the searches compare does not depend on N's length.
-      const T lo = T(5.42101086242752217e-20), hi = T(1.8446744073709552e19);  // 2^-64, 2^64
+      // The same band as unitScaleExponent(): 2^±64 in double, 2^±8 in float.
       for (Vec3<T>* d : {&dp, &dq}) {
         const T big = d->cwiseAbs().maxCoeff();
-        if (big > hi || big < lo) *d = unitOrder(*d);
+        if (big > unitHi_ || big < unitLo_) *d = unitOrder(*d);
       }
     }
     Vec3<T> N = dp.cross(dq);
@@ -245,6 +324,9 @@ class PairFrame {
   Vec3<T> t_;
   bool useHierarchy_;
   T scene_ = T(0);   // inexact T: sceneSize()
+  T arcBoundPPQ_ = T(0), arcBoundPQQ_ = T(0);  // inexact T: the arc test's filter (ee())
+  T edgeBoundP_ = T(0), edgeBoundQ_ = T(0);    // ... where an arc's plane is its edge
+  T unitLo_ = T(0), unitHi_ = T(0);              // inexact T: 2^-kUnitBand, 2^kUnitBand
   int unitExp_ = 0;  // inexact T: unitScaleExponent()
 };
 
