@@ -66,8 +66,8 @@ class PairFrame {
       const T nQ = sqrt(C_.squaredNorm()) * (T(1) + T(16) * u);
       arcBoundPPQ_ = T(12) * u * nP * nP * nQ + detail::denormalErrorBound(T(32));
       arcBoundPQQ_ = T(12) * u * nP * nQ * nQ + detail::denormalErrorBound(T(32));
-      // An edge plane (arcFrame()) is an edge scaled to |e|_max in [1, 2), so |e| < 3.5;
-      // its volumes are dot products x · e, off by at most γ3 |x||e| < 4 u · 3.5 |x|.
+      // An edge plane (edgePlaneP / edgePlaneQ) is an edge scaled to |e|_max in [1, 2), so
+      // |e| < 3.5; its volumes are dot products x · e, off by at most γ3 |x||e| < 4 u · 3.5 |x|.
       edgeBoundP_ = T(14) * u * nQ + detail::denormalErrorBound(T(32));  // c · e_P, d · e_P
       edgeBoundQ_ = T(14) * u * nP + detail::denormalErrorBound(T(32));  // a · e_Q, b · e_Q
       unitLo_ = detail::timesPowerOfTwo(T(1), -kUnitBand);
