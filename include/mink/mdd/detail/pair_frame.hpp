@@ -247,14 +247,21 @@ class PairFrame {
     // The four volumes of arc_intersection.hpp: det[c b a] = c · (b × a) and
     // det[a d c] = a · (d × c), the arcs' great-circle planes taken once each (or the
     // edges themselves: edgePlaneP / edgePlaneQ).
-    Vec3<T> nP = b.cross(a), nQ = d.cross(c);
-    const bool eP = edgePlaneP(nP, ep), eQ = edgePlaneQ(nQ, eq);
-    const ArcVolumes<T> raw{c.dot(nP), d.dot(nP), a.dot(nQ), b.dot(nQ)};
+    Vec3<T> nP = b.cross(a);
+    const bool eP = edgePlaneP(nP, ep);
+    const T cba = c.dot(nP), dba = d.dot(nP);
+    // Most pairs end here: c and d certainly on one side of P's arc plane (so are −c and
+    // −d), and the arcs are disjoint whatever the other two signs (classifyArcSigns).
+    const T bP = ScalarTraits<T>::isExact ? T(0) : (eP ? edgeBoundP_ : arcBoundPPQ_);
+    if ((cba > bP && dba > bP) || (cba < -bP && dba < -bP)) return m;
+    Vec3<T> nQ = d.cross(c);
+    const bool eQ = edgePlaneQ(nQ, eq);
+    const ArcVolumes<T> raw{cba, dba, a.dot(nQ), b.dot(nQ)};
     int sCba = detail::sign(raw.cba), sDba = detail::sign(raw.dba);
     int sAdc = detail::sign(raw.adc), sBdc = detail::sign(raw.bdc);
     if constexpr (!ScalarTraits<T>::isExact) {
       // The common case costs four comparisons: every volume beyond the filter's bound.
-      const T bP = eP ? edgeBoundP_ : arcBoundPPQ_, bQ = eQ ? edgeBoundQ_ : arcBoundPQQ_;
+      const T bQ = eQ ? edgeBoundQ_ : arcBoundPQQ_;
       const bool certain = (absValue(raw.cba) > bP) & (absValue(raw.dba) > bP) & (absValue(raw.adc) > bQ) &
                            (absValue(raw.bdc) > bQ);
       if (!certain) {
