@@ -84,11 +84,12 @@ TEST(DifferenceOrientation, DotAndDeterminantSignsAgreeWithRationals) {
     const Q det = exact(x).dot(exact(y).cross(exact(z)));
     const int es = (det > 0) - (det < 0);
     ASSERT_EQ(mink::det3Sign(x, y, z), es) << "case " << k;
-    if (kind != 2 && kind != 3)  // float: evaluated exactly in double
+    if (kind != 2 && kind != 3) {  // float: evaluated exactly in double
       ASSERT_EQ(mink::det3Sign(x.cast<float>().eval(), y.cast<float>().eval(), z.cast<float>().eval()),
-              mink::det3Sign(x.cast<float>().cast<double>().eval(), y.cast<float>().cast<double>().eval(),
-                             z.cast<float>().cast<double>().eval()))
-        << "case " << k;
+                mink::det3Sign(x.cast<float>().cast<double>().eval(), y.cast<float>().cast<double>().eval(),
+                               z.cast<float>().cast<double>().eval()))
+          << "case " << k;
+    }
     zeros += (ds == 0) + (es == 0);
   }
   std::printf("[dotSign / det3Sign] 20000 cases, %d exact zeros, %d rounded dot products of the wrong sign\n", zeros,

@@ -4,6 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
 #include <limits>
 
 #include <CGAL/Gmpq.h>
@@ -69,6 +73,40 @@ TEST(ScalarTraits, SignAndAbs) {
   EXPECT_EQ(absValue(-3.0L), 3.0L);
   EXPECT_TRUE(absValue(CGAL::Gmpq(-5, 7)) == CGAL::Gmpq(5, 7));
   EXPECT_TRUE(absValue(CGAL::Gmpq(5, 7)) == CGAL::Gmpq(5, 7));
+}
+
+// timesPow2 multiplies by the power of two for |k| <= 62 instead of calling ldexp: the
+// bits must be ldexp's everywhere, including results that round into the subnormal
+// range, overflow, and the inputs +-0, +-inf, NaN.
+template <class T>
+void expectTimesPow2IsLdexp() {
+  using L = std::numeric_limits<T>;
+  std::mt19937_64 rng(17u);
+  std::uniform_real_distribution<double> mant(1.0, 2.0);
+  std::uniform_int_distribution<int> ex(L::min_exponent - L::digits - 4, L::max_exponent + 2);
+  std::vector<T> xs = {T(0), -T(0), T(1), -T(1), L::min(), L::denorm_min(), L::max(), -L::max(), L::epsilon(),
+                       L::infinity(), -L::infinity()};
+  for (int i = 0; i < 4000; ++i) {
+    const T x = std::ldexp(T(mant(rng)), ex(rng));  // saturates to 0 or inf at the ends
+    xs.push_back(i % 2 ? x : -x);
+  }
+  int checked = 0;
+  for (const T& x : xs)
+    for (int k = -80; k <= 80; ++k) {
+      const T got = mink::detail::timesPow2(x, k), want = std::ldexp(x, k);
+      ASSERT_EQ(std::memcmp(&got, &want, sizeof(T) > 10 ? 10 : sizeof(T)), 0)
+          << "x = " << static_cast<long double>(x) << ", k = " << k;
+      ++checked;
+    }
+  const T nan = mink::detail::timesPow2(L::quiet_NaN(), 5);
+  EXPECT_TRUE(nan != nan);
+  EXPECT_GT(checked, 600000);
+}
+
+TEST(ScalarTraits, TimesPow2HasTheBitsOfLdexp) {
+  expectTimesPow2IsLdexp<float>();
+  expectTimesPow2IsLdexp<double>();
+  expectTimesPow2IsLdexp<long double>();  // x87: 10 significant bytes
 }
 
 }  // namespace

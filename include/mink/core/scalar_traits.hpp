@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -111,6 +112,19 @@ bool surelyUphill(const Eigen::Matrix<T, 3, 1>& d, const Eigen::Matrix<T, 3, 1>&
   }
 }
 
+/// 2^k x for an inexact scalar: the bits of ldexp(x, k). For |k| <= 62 a product with
+/// the power of two, which is exact wherever ldexp is and rounds once, to nearest, where
+/// the result is subnormal (as ldexp does): no call into libm on the hot path.
+template <class T>
+T timesPow2(const T& x, int k) {
+  static_assert(!ScalarTraits<T>::isExact, "timesPow2(scalar): inexact scalars only");
+  if (k == 0) return x;
+  if (k > 0 && k <= 62) return x * T(std::uint64_t(1) << k);
+  if (k < 0 && k >= -62) return x * (T(1) / T(std::uint64_t(1) << -k));
+  using std::ldexp;
+  return ldexp(x, k);
+}
+
 /// 2^k v, componentwise ldexp (exact unless a component leaves the normal range), for
 /// inexact scalars; v itself for exact scalars.
 template <class T>
@@ -119,8 +133,7 @@ Eigen::Matrix<T, 3, 1> timesPow2(const Eigen::Matrix<T, 3, 1>& v, int k) {
     (void)k;
     return v;
   } else {
-    using std::ldexp;
-    return Eigen::Matrix<T, 3, 1>(ldexp(v[0], k), ldexp(v[1], k), ldexp(v[2], k));
+    return Eigen::Matrix<T, 3, 1>(timesPow2(v[0], k), timesPow2(v[1], k), timesPow2(v[2], k));
   }
 }
 
@@ -137,9 +150,7 @@ Eigen::Matrix<T, 3, 1> unitOrder(const Eigen::Matrix<T, 3, 1>& v) {
     const T big = v.cwiseAbs().maxCoeff();
     if (!(big > T(0)) || !ScalarTraits<T>::isFinite(big)) return v;
     using std::ilogb;
-    using std::ldexp;
-    const int e = ilogb(big);
-    return Eigen::Matrix<T, 3, 1>(ldexp(v[0], -e), ldexp(v[1], -e), ldexp(v[2], -e));
+    return timesPow2(v, -static_cast<int>(ilogb(big)));
   }
 }
 

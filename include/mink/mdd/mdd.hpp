@@ -82,9 +82,8 @@ MddResult<T> mddQuery(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const 
     // order, so that |s|^2 and the products with s neither overflow nor underflow, and
     // scale the parameter back (parameter * s is unchanged).
     using std::ilogb;
-    using std::ldexp;
     const int e = ilogb(s.cwiseAbs().maxCoeff());
-    Vec3<T> su(ldexp(s[0], -e), ldexp(s[1], -e), ldexp(s[2], -e));
+    Vec3<T> su = timesPow2(s, -e);
     // A component below the unit roundoff of the largest tilts the line by less than the
     // rounding of any product with s, but it made the 2-D centre-of-duality test call a
     // grazing line (tilted by 1e-21) interior, with c on the boundary of M: it is
@@ -94,7 +93,7 @@ MddResult<T> mddQuery(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const 
     for (int i = 0; i < 3; ++i)
       if (su[i] != T(0) && absValue(su[i]) < ScalarTraits<T>::epsilon()) su[i] = T(0), rounded = true;
     MddResult<T> r = MddDriver<T>(P, poseP, Q, poseQ, su, cache, options, bothExits).run();
-    r.parameter = ldexp(r.parameter, -e);
+    r.parameter = timesPow2(r.parameter, -e);
     r.directionRounded = rounded;
     return r;
   }

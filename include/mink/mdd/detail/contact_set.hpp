@@ -366,12 +366,16 @@ bool locateOriginConvex(const std::vector<std::pair<std::pair<T, T>, int>>& pts,
   }
   if ((pos > 0) == (neg > 0)) return false;  // outside, or every edge through the origin
   const int side = pos > 0 ? 1 : -1;
-  // Each fan triangle tested on its own three sides: an origin on a diagonal may then be
-  // refused by both triangles beside it (rounding); the caller's search then decides.
+  // Each fan triangle (p0, pi, pi+1) tested on its own three sides: an origin on a
+  // diagonal may then be refused by both triangles beside it (rounding); the caller's
+  // search then decides. The sign on diagonal p0 pi+1 is the next triangle's on p0 pi,
+  // negated (orient2 is exact, so antisymmetric): one new sign per triangle.
+  int nearSide = side * orient2(pts[0].first, pts[1].first, o);  // side of p0 p_i
   for (std::size_t i = 1; i + 1 < n; ++i) {
-    if (side * orient2(pts[0].first, pts[i].first, o) < 0 || side * orient2(pts[i].first, pts[i + 1].first, o) < 0 ||
-        side * orient2(pts[i + 1].first, pts[0].first, o) < 0)
-      continue;
+    const int farSide = side * orient2(pts[0].first, pts[i + 1].first, o);  // −(side of p_i+1 p0)
+    const bool inWedge = nearSide >= 0 && farSide <= 0;
+    nearSide = farSide;
+    if (!inWedge || side * orient2(pts[i].first, pts[i + 1].first, o) < 0) continue;
     if (triangleLocation(pts[0], pts[i], pts[i + 1], loc)) return true;
   }
   return false;
