@@ -62,6 +62,29 @@ class BoxTree {
     if (!boxes.empty()) buildNode(0, static_cast<int>(boxes.size()));
   }
 
+  /// Items that build() was given (refit() needs as many).
+  std::size_t size() const { return boxes_.size(); }
+
+  /// The same tree over new boxes (same count and items as the last build()): every node's
+  /// box recomputed bottom-up from its items', the split kept. O(n), no allocation. For a
+  /// rigidly moved set of boxes the tree stays a valid (if looser) search structure: its
+  /// answers are the same as a rebuilt tree's, only the work to reach them differs.
+  void refit(const std::vector<Box3>& boxes) {
+    std::copy(boxes.begin(), boxes.end(), boxes_.begin());
+    // Children are created after their parent (buildNode), so a reverse sweep sees them first.
+    for (std::size_t id = nodes_.size(); id-- > 0;) {
+      Node& n = nodes_[id];
+      Box3 box;
+      if (n.count > 0) {
+        for (int k = n.first; k < n.first + n.count; ++k) box.add(boxes_[static_cast<std::size_t>(items_[static_cast<std::size_t>(k)])]);
+      } else {
+        box = nodes_[static_cast<std::size_t>(n.left)].box;
+        box.add(nodes_[static_cast<std::size_t>(n.right)].box);
+      }
+      n.box = box;
+    }
+  }
+
   /// Calls visit(i) for every item whose box overlaps `query`.
   template <class Visit>
   void forOverlapping(const Box3& query, Visit&& visit) const {
