@@ -1,9 +1,11 @@
-// tests/mdd/allocation_test.cpp — a warm mdd() / intersects() query allocates nothing.
+// tests/mdd/allocation_test.cpp — a warm mdd() / intersects() query allocates nothing, with
+// the caller's cache and without one (the overloads' per-thread scratch cache).
 // Counts every global operator new in this test executable while a flag is set.
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "mink/mdd/first_contact.hpp"
 #include "mink/mdd/mdd.hpp"
 #include "support/allocation_counter.hpp"
 #include "support/paper_shapes.hpp"
@@ -40,6 +42,23 @@ TEST(MddAllocation, WarmQueriesDoNotAllocate) {
   });
   EXPECT_EQ(allocations, 0);
   EXPECT_GT(contacts, 0);
+  // Without a cache: the same queries once more to size the scratch, then counted.
+  for (const auto& q : queries) {
+    mink::mdd(P, mink::Pose<double>(), Q, q.first, q.second);
+    mink::intersects(P, mink::Pose<double>(), Q, q.first);
+    mink::firstContact(P, mink::Pose<double>(), Q, q.first, q.second);
+  }
+  int contactsNoCache = 0;
+  const long allocationsNoCache = mink_test::allocationsDuring([&] {
+    for (const auto& q : queries) {
+      const auto r = mink::mdd(P, mink::Pose<double>(), Q, q.first, q.second);
+      contactsNoCache += r.status != mink::MddStatus::NoContact;
+      contactsNoCache += mink::intersects(P, mink::Pose<double>(), Q, q.first);
+      contactsNoCache += mink::firstContact(P, mink::Pose<double>(), Q, q.first, q.second).hit;
+    }
+  });
+  EXPECT_EQ(allocationsNoCache, 0);
+  EXPECT_GE(contactsNoCache, contacts);  // the same mdd and intersects answers, and the hits
 }
 
 }  // namespace

@@ -290,3 +290,58 @@ TEST(MddPath, RepeatedPenetratingQueryIsAnsweredByTheCache) {
   EXPECT_GT(cachedAnswers, 10);
   EXPECT_GT(oneEndFirst, 0);
 }
+
+TEST(MddPath, CallsWithoutACacheAnswerAsAFreshCache) {
+  // The overloads without a cache reuse one scratch cache per thread: every answer must be
+  // a fresh cache's, field for field, whatever the scratch served before (other shapes,
+  // the same query just before: never answered from kept faces).
+  std::vector<Overlap> scenes;
+  for (unsigned seed = 1; seed <= 3; ++seed) scenes.push_back(overlapping(seed));
+  for (const std::string& family : mink_test::degenerateFamilies()) {
+    const mink_test::ContactScene sc = mink_test::degenerateScene(family, 12, false);
+    Overlap o{mink::ConvexPolyhedron<double>::fromPoints(sc.P), mink::ConvexPolyhedron<double>::fromPoints(sc.Q),
+              {}, {}, sc.dirs};
+    o.poseQ.rotation = sc.rotQ;
+    o.poseQ.translation = sc.tQ;
+    scenes.push_back(std::move(o));
+  }
+  int queries = 0;
+  std::size_t longest = 0;
+  for (const Overlap& o : scenes) longest = std::max(longest, o.dirs.size());
+  // Interleaved: consecutive calls are on different pairs, then each query twice in a row.
+  for (std::size_t d = 0; d < longest; ++d) {
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+      const Overlap& o = scenes[k];
+      if (d >= o.dirs.size()) continue;
+      const Eigen::Vector3d& s = o.dirs[d];
+      const std::string label = "scene " + std::to_string(k) + " direction " + std::to_string(d);
+      for (int again = 0; again < 2; ++again) {
+        mink::MddCache<double> fresh;
+        const auto a = mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s);
+        const auto b = mink::mdd(o.P, o.poseP, o.Q, o.poseQ, s, fresh);
+        ASSERT_EQ(a.status, b.status) << label;
+        EXPECT_EQ(a.path, b.path) << label;
+        EXPECT_FALSE(a.fromCache) << label;
+        EXPECT_EQ(a.faceType, b.faceType) << label;
+        EXPECT_EQ(a.featureP, b.featureP) << label;
+        EXPECT_EQ(a.featureQ, b.featureQ) << label;
+        if (a.status == MddStatus::Separated || a.status == MddStatus::Penetrating) {
+          EXPECT_EQ(a.parameter, b.parameter) << label;
+          EXPECT_EQ(a.witnessP, b.witnessP) << label;
+          EXPECT_EQ(a.witnessQ, b.witnessQ) << label;
+          EXPECT_EQ(a.normal, b.normal) << label;
+        }
+        EXPECT_EQ(a.visitedFV + a.visitedVF + a.visitedEE, b.visitedFV + b.visitedVF + b.visitedEE) << label;
+        mink::MddCache<double> fresh2, fresh3;
+        EXPECT_EQ(mink::intersects(o.P, o.poseP, o.Q, o.poseQ), mink::intersects(o.P, o.poseP, o.Q, o.poseQ, fresh2))
+            << label;
+        const auto fa = mink::firstContact(o.P, o.poseP, o.Q, o.poseQ, s);
+        const auto fb = mink::firstContact(o.P, o.poseP, o.Q, o.poseQ, s, fresh3);
+        EXPECT_EQ(fa.hit, fb.hit) << label;
+        EXPECT_EQ(fa.fraction, fb.fraction) << label;
+        ++queries;
+      }
+    }
+  }
+  EXPECT_GT(queries, 200);
+}

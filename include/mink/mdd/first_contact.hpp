@@ -85,12 +85,11 @@ FirstContact<T> firstContact(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
   return out;
 }
 
-/// firstContact() without a coherence cache.
+/// firstContact() without a coherence cache (detail::scratchCache: a fresh cache's answer).
 template <class T>
 FirstContact<T> firstContact(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                              const Pose<T>& poseQ, const Vec3<T>& d, const MddOptions<T>& options = {}) {
-  MddCache<T> cache;
-  return firstContact(P, poseP, Q, poseQ, d, cache, options);
+  return firstContact(P, poseP, Q, poseQ, d, detail::scratchCache<T>(), options);
 }
 
 }  // namespace mink

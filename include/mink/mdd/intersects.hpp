@@ -106,20 +106,18 @@ Result<bool> tryIntersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, c
   return detail::intersectsChecked(P, poseP, Q, poseQ, cache, options);
 }
 
-/// intersects() without a coherence cache.
+/// intersects() without a coherence cache (detail::scratchCache: a fresh cache's answer).
 template <class T>
 bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                 const Pose<T>& poseQ, const MddOptions<T>& options = {}) {
-  MddCache<T> cache;
-  return intersects(P, poseP, Q, poseQ, cache, options);
+  return intersects(P, poseP, Q, poseQ, detail::scratchCache<T>(), options);
 }
 
-/// tryIntersects() without a coherence cache.
+/// tryIntersects() without a coherence cache (detail::scratchCache).
 template <class T>
 Result<bool> tryIntersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                            const Pose<T>& poseQ, const MddOptions<T>& options = {}) {
-  MddCache<T> cache;
-  return tryIntersects(P, poseP, Q, poseQ, cache, options);
+  return tryIntersects(P, poseP, Q, poseQ, detail::scratchCache<T>(), options);
 }
 
 }  // namespace mink

@@ -114,12 +114,12 @@ MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Conve
   return detail::mddQuery(P, poseP, Q, poseQ, s, cache, options, false);
 }
 
-/// mdd() without a coherence cache (allocates its small work buffers per call).
+/// mdd() without a coherence cache: the answer of a fresh MddCache (no hint from earlier
+/// calls), with work buffers kept per thread (detail::scratchCache: no allocation once warm).
 template <class T>
 MddResult<T> mdd(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                  const Pose<T>& poseQ, const Vec3<T>& s, const MddOptions<T>& options = {}) {
-  MddCache<T> cache;
-  return mdd(P, poseP, Q, poseQ, s, cache, options);
+  return mdd(P, poseP, Q, poseQ, s, detail::scratchCache<T>(), options);
 }
 
 }  // namespace mink
