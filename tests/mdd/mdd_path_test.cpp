@@ -203,6 +203,15 @@ Overlap overlapping(unsigned seed) {
   return o;
 }
 
+// A degenerate contact (or its twin) with its directions.
+Overlap overlapOf(const mink_test::ContactScene& sc) {
+  Overlap o{mink::ConvexPolyhedron<double>::fromPoints(sc.P), mink::ConvexPolyhedron<double>::fromPoints(sc.Q),
+            {}, {}, sc.dirs};
+  o.poseQ.rotation = sc.rotQ;
+  o.poseQ.translation = sc.tQ;
+  return o;
+}
+
 }  // namespace
 
 TEST(MddPath, OneOffPenetratingQueryMatchesBothExits) {
@@ -214,12 +223,7 @@ TEST(MddPath, OneOffPenetratingQueryMatchesBothExits) {
   for (unsigned seed = 1; seed <= 5; ++seed) scenes.push_back(overlapping(seed));
   for (const std::string& family : mink_test::degenerateFamilies()) {
     for (bool generic : {false, true}) {
-      const mink_test::ContactScene sc = mink_test::degenerateScene(family, 12, generic);
-      Overlap o{mink::ConvexPolyhedron<double>::fromPoints(sc.P), mink::ConvexPolyhedron<double>::fromPoints(sc.Q),
-                {}, {}, sc.dirs};
-      o.poseQ.rotation = sc.rotQ;
-      o.poseQ.translation = sc.tQ;
-      scenes.push_back(std::move(o));
+      scenes.push_back(overlapOf(mink_test::degenerateScene(family, 12, generic)));
     }
   }
   int penetrating = 0, skipped = 0;
@@ -298,12 +302,7 @@ TEST(MddPath, CallsWithoutACacheAnswerAsAFreshCache) {
   std::vector<Overlap> scenes;
   for (unsigned seed = 1; seed <= 3; ++seed) scenes.push_back(overlapping(seed));
   for (const std::string& family : mink_test::degenerateFamilies()) {
-    const mink_test::ContactScene sc = mink_test::degenerateScene(family, 12, false);
-    Overlap o{mink::ConvexPolyhedron<double>::fromPoints(sc.P), mink::ConvexPolyhedron<double>::fromPoints(sc.Q),
-              {}, {}, sc.dirs};
-    o.poseQ.rotation = sc.rotQ;
-    o.poseQ.translation = sc.tQ;
-    scenes.push_back(std::move(o));
+    scenes.push_back(overlapOf(mink_test::degenerateScene(family, 12, false)));
   }
   int queries = 0;
   std::size_t longest = 0;
