@@ -134,7 +134,9 @@ class LocalMinkowskiSum {
         B_(B),
         options_(options),
         frame_(A_, B_),
-        overlap_(A_, B_, Mat3<T>::Identity(), Vec3<T>::Zero()) {}
+        overlap_(A_, B_, Mat3<T>::Identity(), Vec3<T>::Zero()),
+        ownedA_(ownership(A_)),
+        ownedB_(ownership(B_)) {}
 
   /// The Error update() raises for these arguments before any work, or none: a pose that is
   /// not rigid, a non-finite centre, a radius <= 0 or not finite.
@@ -329,26 +331,66 @@ class LocalMinkowskiSum {
   /// lookup), and no culling loses one: its owners contain its features, so the owners'
   /// pair passes every test that is conservative for a triangle pair (the difference of
   /// their boxes, the sphere of t_A ⊕ −t_B) whenever the facet meets the region.
+  ///
+  /// The facet boxes are taken from the triangles' own: the box of the corners a_i − b_j
+  /// (i over the feature of A, j over that of B), rounded, is [min a_i − max b_j,
+  /// max a_i − min b_j] rounded, since rounding is monotone: the same bits as consider()'s
+  /// box of the rounded corners, from per-axis extremes made once per triangle pair.
   void trianglePairFeatures(int fa, int fb) {
     const auto& ta = A_.triangle(fa);
     const auto& tb = B_.triangle(fb);
-    bool ownsA[3], ownsB[3];
+    const unsigned ownA = ownedA_[static_cast<std::size_t>(fa)], ownB = ownedB_[static_cast<std::size_t>(fb)];
+    const Vec3<T>* pa[3];
+    const Vec3<T>* pb[3];
     for (int i = 0; i < 3; ++i) {
-      ownsA[i] = A_.vertexTriangles(ta[i])[0] == fa;
-      ownsB[i] = B_.vertexTriangles(tb[i])[0] == fb;
+      pa[i] = &frame_.a(ta[i]);
+      pb[i] = &frame_.b(tb[i]);
     }
+    // A feature's extremes per axis: the triangle's, or an edge's (k, k + 1).
+    const Vec3<T> aLo = pa[0]->cwiseMin(*pa[1]).cwiseMin(*pa[2]), aHi = pa[0]->cwiseMax(*pa[1]).cwiseMax(*pa[2]);
+    const Vec3<T> bLo = pb[0]->cwiseMin(*pb[1]).cwiseMin(*pb[2]), bHi = pb[0]->cwiseMax(*pb[1]).cwiseMax(*pb[2]);
+    auto boxMeets = [&](const Vec3<T>& loA, const Vec3<T>& hiA, const Vec3<T>& loB, const Vec3<T>& hiB) {
+      for (int a = 0; a < 3; ++a)
+        if (T(loA[a] - hiB[a]) > region_.hi[a] || T(hiA[a] - loB[a]) < region_.lo[a]) return false;
+      return true;
+    };
+    auto take = [&](ConvolutionPair c, bool meets) {
+      ++patch_.candidatePairs;
+      if (meets && frame_.compatible(c)) facets_.push_back(c);
+    };
     for (int j = 0; j < 3; ++j)
-      if (ownsB[j]) consider({ConvolutionType::FV, fa, tb[j], 0});
+      if (ownB & (1u << j)) take({ConvolutionType::FV, fa, tb[j], 0}, boxMeets(aLo, aHi, *pb[j], *pb[j]));
     for (int i = 0; i < 3; ++i)
-      if (ownsA[i]) consider({ConvolutionType::VF, ta[i], fb, 0});
+      if (ownA & (1u << i)) take({ConvolutionType::VF, ta[i], fb, 0}, boxMeets(*pa[i], *pa[i], bLo, bHi));
+    if (!(ownA & 070u) || !(ownB & 070u)) return;
     for (int i = 0; i < 3; ++i) {
+      if (!(ownA & (8u << i))) continue;
+      // Side i of a triangle runs from corner i to corner i + 1 (TriangleMesh).
+      const Vec3<T>&a0 = *pa[i], &a1 = *pa[(i + 1) % 3];
+      const Vec3<T> eaLo = a0.cwiseMin(a1), eaHi = a0.cwiseMax(a1);
       const int ea = A_.triangleEdge(fa, i);
-      if (A_.edgeTriangles(ea).first != fa) continue;
       for (int j = 0; j < 3; ++j) {
-        const int eb = B_.triangleEdge(fb, j);
-        if (B_.edgeTriangles(eb).first == fb) consider({ConvolutionType::EE, ea, eb, 0});
+        if (!(ownB & (8u << j))) continue;
+        const Vec3<T>&b0 = *pb[j], &b1 = *pb[(j + 1) % 3];
+        take({ConvolutionType::EE, ea, B_.triangleEdge(fb, j), 0},
+             boxMeets(eaLo, eaHi, b0.cwiseMin(b1), b0.cwiseMax(b1)));
       }
     }
+  }
+
+  /// Per triangle t of X, the features it owns (see trianglePairFeatures): bit i (i < 3)
+  /// its corner i, bit 3 + i its side i.
+  static std::vector<unsigned char> ownership(const TriangleMesh<T>& X) {
+    std::vector<unsigned char> own(static_cast<std::size_t>(X.numTriangles()), 0);
+    for (int t = 0; t < X.numTriangles(); ++t) {
+      unsigned bits = 0;
+      for (int i = 0; i < 3; ++i) {
+        if (X.vertexTriangles(X.triangle(t)[i])[0] == t) bits |= 1u << i;
+        if (X.edgeTriangles(X.triangleEdge(t, i)).first == t) bits |= 8u << i;
+      }
+      own[static_cast<std::size_t>(t)] = static_cast<unsigned char>(bits);
+    }
+    return own;
   }
 
   /// A candidate pair: kept if compatible and its facet's box meets the region box.
@@ -486,6 +528,8 @@ class LocalMinkowskiSum {
   detail::Trimmer<T> trimmer_;
   std::vector<ConvolutionPair> facets_;
   std::vector<std::pair<int, int>> stack_;
+  // The features each triangle owns (ownership(); the meshes' topology, kept by rescale).
+  std::vector<unsigned char> ownedA_, ownedB_;
   MinkowskiPatch<T> patch_;
   // ConvexMaps: the two maps, each feature's cell of the last call, a walk's work space.
   std::shared_ptr<const ConvexMap<T>> mapA_, mapB_;  // shared with every user of the mesh
