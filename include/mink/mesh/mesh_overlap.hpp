@@ -8,8 +8,9 @@
 //   2. Per query, floating-point T: two trees of triangle boxes (double) are traversed
 //      in pairs, A's built once, B's refit to its mapped vertices per placement (split
 //      anew when the rotation has turned far), B's moved by y; a pair of boxes apart by
-//      more than the rounding of the conversion to double is culled. Boxes hug thin and hollow shapes (a torus through another's hole) far
-//      better than spheres do. Exact T: the two sphere trees, a node pair culled when
+//      more than the rounding of the conversion to double is culled. Boxes hug thin and
+//      hollow shapes (a torus through another's hole) far better than spheres do.
+//      Exact T: the two sphere trees, a node pair culled when
 //      |c_A − (c'_B + y)|² > (r_A + r_B + slack)², compared squared (no sqrt), with
 //      `slack` bounding the rounding of the mapped points (0 for exact T); the node with
 //      the larger radius is split first.

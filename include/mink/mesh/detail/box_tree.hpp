@@ -76,7 +76,8 @@ class BoxTree {
       Node& n = nodes_[id];
       Box3 box;
       if (n.count > 0) {
-        for (int k = n.first; k < n.first + n.count; ++k) box.add(boxes_[static_cast<std::size_t>(items_[static_cast<std::size_t>(k)])]);
+        for (int k = n.first; k < n.first + n.count; ++k)
+          box.add(boxes_[static_cast<std::size_t>(items_[static_cast<std::size_t>(k)])]);
       } else {
         box = nodes_[static_cast<std::size_t>(n.left)].box;
         box.add(nodes_[static_cast<std::size_t>(n.right)].box);
