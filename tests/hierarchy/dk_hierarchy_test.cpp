@@ -467,7 +467,7 @@ CaseReport checkCase(const std::string& name, const std::vector<Vec3<T>>& points
   const std::vector<Vec3<T>> dirs = directions<T>(numDirs, rng);
   std::uniform_int_distribution<int> hintDist(0, n - 1);
   const ReferenceScan<T> scan(P);
-  Checker<T> dk{P, name}, climb0{P, name}, climbHint{P, name}, extreme{P, name};
+  Checker<T> dk{P, name}, climb0{P, name}, climbHint{P, name}, extreme{P, name}, from{P, name};
   long long moves = 0, evaluations = 0;
   int excessMoves = 0;
   for (int k = 0; k < static_cast<int>(dirs.size()); ++k) {
@@ -482,8 +482,18 @@ CaseReport checkCase(const std::string& name, const std::vector<Vec3<T>>& points
     climb0.check("support(d, 0)", k, d, P.support(d, 0), max);
     climbHint.check("support(d, hint)", k, d, P.support(d, hintDist(rng)), max);
     extreme.check("extremeVertex", k, d, extremeVertex(P, d), max);
+    // Warm-started: the climb alone (large cap), cut short and finished by the descent
+    // (caps 0 and 2 from a random vertex), from the last direction's answer, and from a
+    // hint out of range (the descent).
+    from.check("supportFrom(d, hint, 1 << 30)", k, d, H.supportFrom(d, hintDist(rng), 1 << 30), max);
+    from.check("supportFrom(d, hint, 0)", k, d, H.supportFrom(d, hintDist(rng), 0), max);
+    from.check("supportFrom(d, hint, 2)", k, d, H.supportFrom(d, hintDist(rng), 2), max);
+    from.check("supportFrom(d, previous answer, 8)", k, d,
+               H.supportFrom(d, k > 0 ? H.support(dirs[k - 1]) : 0, 8), max);
+    from.check("supportFrom(d, -1, 8)", k, d, H.supportFrom(d, -1, 8), max);
+    from.check("supportFrom(d, n, 8)", k, d, H.supportFrom(d, n, 8), max);
   }
-  for (const Checker<T>* c : {&dk, &climb0, &climbHint, &extreme}) {
+  for (const Checker<T>* c : {&dk, &climb0, &climbHint, &extreme, &from}) {
     EXPECT_EQ(c->failures, 0) << c->firstFailure;
     report.worstRatio = std::max(report.worstRatio, c->worstRatio);
   }

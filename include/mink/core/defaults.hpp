@@ -38,6 +38,17 @@ constexpr int kHierarchyMinVertices = 1024;
 /// Safe range: any (only ids and speed change).
 constexpr int kSpatialOrderMinVertices = 1024;
 
+/// A support query on a shape with a hierarchy, given a vertex that was the support of a
+/// nearby direction (an iterative step's last answer), first hill-climbs from it on the
+/// shape's graph for at most this many moves, and descends the hierarchy only if the
+/// climb has not ended by then (DKHierarchy::supportFrom). Unit: moves (each reads one
+/// vertex's neighbours). Safe range: >= 0 (0: every such query descends; any value is
+/// correct, only speed changes). Measured (mink_mdd_bench --sections scaling,
+/// ellipsoid pairs, cold MDD queries, 0 against 8, three runs each): 10k vertices 21.1 -
+/// 23.8 -> 17.4 - 18.0 us; 100k 50 - 58 -> 51 - 53 us (within the runs' spread: there a
+/// third of the portal's refinement directions are more than 16 moves from the last).
+constexpr int kHierarchyClimbMoves = 8;
+
 /// Dobkin–Kirkpatrick construction removes independent vertices of degree at most
 /// this many per level. Unit: edges. Safe range: 6 .. 12 (the planar-graph bound
 /// guarantees a constant fraction of removable vertices for any value >= 6). Measured at

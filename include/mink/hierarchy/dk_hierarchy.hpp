@@ -142,6 +142,15 @@ class DKHierarchy {
   }
 
   // ---- statistics ----
+  /// As support(direction), warm-started: a hill-climb on L0 from the ORIGINAL vertex
+  /// `hint` (moving to the strictly best neighbour while one is strictly better, the
+  /// descent's own last step) if it stops within `maxMoves` moves; else the descent from
+  /// the top (so at most maxMoves climbing moves are lost). For a direction near the one
+  /// that gave `hint` (an iterative method's next step, the next frame) the climb is a
+  /// few moves over neighbouring memory, against the descent's reads on every level
+  /// (memory-bound on large shapes). hint out of range: the descent.
+  int supportFrom(const Vec3<T>& direction, int hint, int maxMoves) const;
+
   /// Number of levels, >= 1; level 0 is the shape itself, level numLevels()-1 the top.
   int numLevels() const { return static_cast<int>(levels_.size()); }
   /// Number of vertices of level i.
@@ -186,6 +195,10 @@ class DKHierarchy {
 
   template <bool kCount>
   int supportImpl(const Vec3<T>& direction, DKSupportStats* stats) const;
+  /// The climb on L0 from v (value best) to a vertex no neighbour of which is strictly
+  /// better, returned; -1 when that takes more than maxMoves moves.
+  template <bool kCount>
+  int climbL0(const Vec3<T>& d, int v, T best, long long maxMoves, DKSupportStats* stats) const;
   /// Level of P's vertex graph with each polygonal face split into triangles (pockets,
   /// below and original left empty).
   static Level triangulatedGraph(const ConvexPolyhedron<T>& P, detail::DkPolygonFill& fill);

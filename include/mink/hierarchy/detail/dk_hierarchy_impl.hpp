@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -482,9 +483,15 @@ int DKHierarchy<T>::supportImpl(const Vec3<T>& d, DKSupportStats* stats) const {
   // neighbour is a global maximiser. Exact T needs none (the lemma is exact there), which
   // also keeps a high-degree answer (a cone apex) from costing its degree once more.
   if constexpr (ScalarTraits<T>::isExact) return v;
+  return climbL0<kCount>(d, v, best, std::numeric_limits<long long>::max(), stats);
+}
+
+template <class T>
+template <bool kCount>
+int DKHierarchy<T>::climbL0(const Vec3<T>& d, int v, T best, long long maxMoves, DKSupportStats* stats) const {
   const Level& L = levels_[0];
   const int* nb = L.neighbor.data();
-  for (;;) {
+  for (long long moves = 0;; ++moves) {
     int next = -1;
     const int b = L.start[v], e = L.start[v + 1];
     for (int j = b; j < e; ++j) {
@@ -495,11 +502,20 @@ int DKHierarchy<T>::supportImpl(const Vec3<T>& d, DKSupportStats* stats) const {
       }
     }
     if constexpr (kCount) stats->evaluations += e - b;
-    if (next < 0) break;
+    if (next < 0) return v;
+    if (moves == maxMoves) return -1;
     if constexpr (kCount) ++stats->moves;
     v = next;
   }
-  return v;
+}
+
+template <class T>
+int DKHierarchy<T>::supportFrom(const Vec3<T>& d, int hint, int maxMoves) const {
+  if (hint >= 0 && hint < levelSize(0)) {
+    const int v = climbL0<false>(d, hint, detail::dkDot(d, levels_[0].point[hint]), maxMoves, nullptr);
+    if (v >= 0) return v;
+  }
+  return support(d);
 }
 
 template <class T>

@@ -76,15 +76,19 @@ class ExitFaceSearch {
       //    a little, the exit face is it or one of its neighbours.
       ExitPortal<T> est;
       const int side = sigma.dot(s_) > T(0) ? 0 : 1;  // the kept face on this side first
-      for (int i = 0; i < 2; ++i) {
-        const MFace<T> m = rebuild(cache_.exitFaces[i == 0 ? side : 1 - side]);
-        if (!m.valid() || !(obj.num(m) > T(0))) continue;
-        est.normal = m.N;
-        est.vertexP = m.type == MddFaceType::FV ? P.faceVertices(m.a)[0]
-                      : m.type == MddFaceType::VF ? m.a : P.edgeVertices(m.a).first;
-        est.vertexQ = m.type == MddFaceType::FV ? m.b
-                      : m.type == MddFaceType::VF ? Q.faceVertices(m.b)[0] : Q.edgeVertices(m.b).first;
-        break;
+      for (int i = 0; i < 2 && est.vertexP < 0; ++i) {
+        const MddCachedFace& kept = cache_.exitFaces[i == 0 ? side : 1 - side];
+        const MFace<T> m = rebuild(kept);
+        if (m.valid()) {
+          if (!(obj.num(m) > T(0))) continue;
+          est.normal = m.N;
+          est.vertexP = m.type == MddFaceType::FV ? P.faceVertices(m.a)[0]
+                        : m.type == MddFaceType::VF ? m.a : P.edgeVertices(m.a).first;
+          est.vertexQ = m.type == MddFaceType::FV ? m.b
+                        : m.type == MddFaceType::VF ? Q.faceVertices(m.b)[0] : Q.edgeVertices(m.b).first;
+        } else {
+          lostEdgePair(kept, obj, est);
+        }
       }
       if (est.vertexP >= 0) {
         MFace<T> hit;
@@ -165,6 +169,28 @@ class ExitFaceSearch {
         break;
     }
     return MFace<T>();
+  }
+
+  /// A kept EE face whose two edges no longer form a face of M (their Gauss arcs stopped
+  /// crossing as the pair moved: on a fine mesh that happens every few frames): the exit
+  /// is still near them, so est starts there (their first vertices; the normal between
+  /// the two arcs' midpoints, a + b − c − d for the unit face normals a, b of P's edge and
+  /// c, d of Q's, in P's frame), instead of a cold portal. est is untouched when the kept
+  /// face is not such a pair or that normal faces away from the ray.
+  void lostEdgePair(const MddCachedFace& kept, const RayObjective<T>& obj, ExitPortal<T>& est) const {
+    const ConvexPolyhedron<T>& P = F_.P();
+    const ConvexPolyhedron<T>& Q = F_.Q();
+    if (kept.type != MddFaceType::EE || kept.a < 0 || kept.a >= P.numEdges() || kept.b < 0 ||
+        kept.b >= Q.numEdges())
+      return;
+    const auto fp = P.edgeFaces(kept.a);
+    const auto fq = Q.edgeFaces(kept.b);
+    const Vec3<T> n = P.faceNormal(fp.first) + P.faceNormal(fp.second) -
+                      F_.qNormal(fq.first) - F_.qNormal(fq.second);
+    if (!(n.dot(obj.sigma) > T(0))) return;
+    est.normal = n;
+    est.vertexP = P.edgeVertices(kept.a).first;
+    est.vertexQ = Q.edgeVertices(kept.b).first;
   }
 
   /// The faces at the estimate's support vertices: the FV and VF faces best aligned with

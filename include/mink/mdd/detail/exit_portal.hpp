@@ -63,8 +63,9 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
   };
   ExitPortal<T> out;
   // Discovery directions jump across the sphere: the hierarchy or a seeded hill-climb
-  // (support_seeds.hpp). Refinement directions move less: the hierarchy on large shapes,
-  // else a hill-climb from the portal corner furthest along the new direction.
+  // (support_seeds.hpp). Refinement directions move less: on large shapes a climb from
+  // the last corner capped at defaults::kHierarchyClimbMoves, then the hierarchy; else a
+  // hill-climb from the portal corner furthest along the new direction.
   // Corners in units of 2^e for a scene far from unit order (exact; every test below is
   // homogeneous in them): products of two or three coordinates of 1e-224 underflow.
   const int e = F.unitScaleExponent();

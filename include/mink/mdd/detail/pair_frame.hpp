@@ -127,20 +127,22 @@ class PairFrame {
       return scene_;
     }
   }
-  /// For a direction near the hint's but on a large shape: the hierarchy when the shape
-  /// has one (a long hill-climb on a fine mesh misses the cache at every step; the
-  /// hierarchy's levels are compact), else a hill-climb from the hint.
+  /// For a direction near the hint's: on a shape with a hierarchy, a hill-climb from the
+  /// hint capped at defaults::kHierarchyClimbMoves moves, then the descent (a long climb
+  /// on a fine mesh misses the cache at every step; the hierarchy's levels are compact);
+  /// else a hill-climb from the hint.
   int supportPRefine(const Vec3<T>& d, int hint) const {
     if (useHierarchy_)
-      if (const DKHierarchy<T>* H = hierarchyOf(P_)) return H->support(d);
+      if (const DKHierarchy<T>* H = hierarchyOf(P_)) return H->supportFrom(d, hint, defaults::kHierarchyClimbMoves);
     return P_.support(d, hint < 0 ? 0 : hint);
   }
   int supportMinusQRefine(const Vec3<T>& d, int hint) const {
     const Vec3<T> dl = -(R_.transpose() * d);
     if (useHierarchy_)
-      if (const DKHierarchy<T>* H = hierarchyOf(Q_)) return H->support(dl);
+      if (const DKHierarchy<T>* H = hierarchyOf(Q_)) return H->supportFrom(dl, hint, defaults::kHierarchyClimbMoves);
     return Q_.support(dl, hint < 0 ? 0 : hint);
   }
+
   int supportMinusQFar(const Vec3<T>& d, int hint) const {
     const Vec3<T> dl = -(R_.transpose() * d);
     if (!useHierarchy_) return Q_.support(dl, hint < 0 ? 0 : hint);
