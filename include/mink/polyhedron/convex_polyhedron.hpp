@@ -194,10 +194,9 @@ class ConvexPolyhedron {
   // ---- edges: each undirected edge once ----
   /// The half-edge of e whose face is edgeFaces(e).first.
   int edgeHalfEdge(int e) const { return edgeHalfEdge_[e]; }
-  std::pair<int, int> edgeVertices(int e) const {
-    const int h = edgeHalfEdge_[e];
-    return {heOrigin(h), heTarget(h)};
-  }
+  /// (origin, target) of edgeHalfEdge(e); read from a table (the hot loops of MDD ask for
+  /// it at every EE face).
+  std::pair<int, int> edgeVertices(int e) const { return {edgeVertex_[2 * e], edgeVertex_[2 * e + 1]}; }
   /// (left, right) faces of e: left is on the left of edgeVertices' first -> second.
   std::pair<int, int> edgeFaces(int e) const {
     const int h = edgeHalfEdge_[e];
@@ -291,6 +290,7 @@ class ConvexPolyhedron {
   std::vector<T> faceOffset_;
   std::vector<int> heOrigin_, heTwin_, heFace_, heEdge_;
   std::vector<int> edgeHalfEdge_;
+  std::vector<int> edgeVertex_;  // 2e, 2e + 1: edgeVertices(e)
   T tolerance_ = T(0);
   T extent_ = T(0);
   Vec3<T> interior_ = Vec3<T>::Zero();

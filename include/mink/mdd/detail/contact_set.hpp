@@ -358,24 +358,30 @@ bool locateOriginConvex(const std::vector<std::pair<std::pair<T, T>, int>>& pts,
   const std::size_t n = pts.size();
   if (n < 3) return false;
   const std::pair<T, T> o(T(0), T(0));
+  // The sides of the origin to the polygon's edges p_i p_i+1, kept for the fan below
+  // (the edges of its triangles but the diagonals) up to kKept edges.
+  constexpr std::size_t kKept = 32;
+  signed char edgeSign[kKept];
   int pos = 0, neg = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const int s = orient2(pts[i].first, pts[(i + 1) % n].first, o);
+    const int s = orient2(pts[i].first, pts[i + 1 < n ? i + 1 : 0].first, o);
+    if (i < kKept) edgeSign[i] = static_cast<signed char>(s);
     pos += s > 0;
     neg += s < 0;
   }
   if ((pos > 0) == (neg > 0)) return false;  // outside, or every edge through the origin
   const int side = pos > 0 ? 1 : -1;
+  auto edge = [&](std::size_t i) { return i < kKept ? int(edgeSign[i]) : orient2(pts[i].first, pts[i + 1].first, o); };
   // Each fan triangle (p0, pi, pi+1) tested on its own three sides: an origin on a
   // diagonal may then be refused by both triangles beside it (rounding); the caller's
   // search then decides. The sign on diagonal p0 pi+1 is the next triangle's on p0 pi,
   // negated (orient2 is exact, so antisymmetric): one new sign per triangle.
-  int nearSide = side * orient2(pts[0].first, pts[1].first, o);  // side of p0 p_i
+  int nearSide = side * edge(0);  // side of p0 p_i
   for (std::size_t i = 1; i + 1 < n; ++i) {
     const int farSide = side * orient2(pts[0].first, pts[i + 1].first, o);  // −(side of p_i+1 p0)
     const bool inWedge = nearSide >= 0 && farSide <= 0;
     nearSide = farSide;
-    if (!inWedge || side * orient2(pts[i].first, pts[i + 1].first, o) < 0) continue;
+    if (!inWedge || side * edge(i) < 0) continue;
     if (triangleLocation(pts[0], pts[i], pts[i + 1], loc)) return true;
   }
   return false;

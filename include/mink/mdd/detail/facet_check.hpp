@@ -148,32 +148,39 @@ class FacetCheck {
     cache_.setP.clear();
     cache_.setQ.clear();
     cache_.points2.clear();
-    // The face's polygon in cyclic order; ids index setP × setQ as in hitSets.
-    auto add = [&](int ip, int iq) {
-      const Vec3<T> y = P.vertex(cache_.setP[ip]) - F_.q(cache_.setQ[iq]);
-      cache_.points2.push_back({{y.dot(u1_), y.dot(u2_)}, ip * static_cast<int>(cache_.setQ.size()) + iq});
-    };
+    // The face's polygon in cyclic order; ids index setP × setQ as in hitSets (i·|setQ| + j).
+    // Each vertex of P and of Q placed once (y = p − q, as formed from the pair before).
+    auto add = [&](const Vec3<T>& y, int id) { cache_.points2.push_back({{y.dot(u1_), y.dot(u2_)}, id}); };
     switch (m.type) {
-      case MddFaceType::FV:
+      case MddFaceType::FV: {
         for (int v : P.faceVertices(m.a)) cache_.setP.push_back(v);
         cache_.setQ.push_back(m.b);
-        for (int i = 0; i < static_cast<int>(cache_.setP.size()); ++i) add(i, 0);
+        const Vec3<T> q = F_.q(m.b);
+        for (int i = 0; i < static_cast<int>(cache_.setP.size()); ++i) add(P.vertex(cache_.setP[i]) - q, i);
         break;
-      case MddFaceType::VF:
+      }
+      case MddFaceType::VF: {
         cache_.setP.push_back(m.a);
         for (int v : Q.faceVertices(m.b)) cache_.setQ.push_back(v);
-        for (int j = 0; j < static_cast<int>(cache_.setQ.size()); ++j) add(0, j);
+        const Vec3<T>& p = P.vertex(m.a);
+        for (int j = 0; j < static_cast<int>(cache_.setQ.size()); ++j) add(p - F_.q(cache_.setQ[j]), j);
         break;
-      case MddFaceType::EE:
-        cache_.setP.push_back(P.edgeVertices(m.a).first);
-        cache_.setP.push_back(P.edgeVertices(m.a).second);
-        cache_.setQ.push_back(Q.edgeVertices(m.b).first);
-        cache_.setQ.push_back(Q.edgeVertices(m.b).second);
-        add(0, 0);
-        add(1, 0);
-        add(1, 1);
-        add(0, 1);
+      }
+      case MddFaceType::EE: {
+        const auto ep = P.edgeVertices(m.a), eq = Q.edgeVertices(m.b);
+        cache_.setP.push_back(ep.first);
+        cache_.setP.push_back(ep.second);
+        cache_.setQ.push_back(eq.first);
+        cache_.setQ.push_back(eq.second);
+        const Vec3<T>& p0 = P.vertex(ep.first);
+        const Vec3<T>& p1 = P.vertex(ep.second);
+        const Vec3<T> q0 = F_.q(eq.first), q1 = F_.q(eq.second);
+        add(p0 - q0, 0);  // (0, 0)
+        add(p1 - q0, 2);  // (1, 0)
+        add(p1 - q1, 3);  // (1, 1)
+        add(p0 - q1, 1);  // (0, 1)
         break;
+      }
       default:
         return false;
     }

@@ -285,10 +285,13 @@ struct PolyhedronFinish : PolyhedronGeometry<T> {
       P.heTwin_ = twinsBySorting(P.heOrigin_, nx);
     }
     P.heEdge_.assign(nH, -1);
+    P.edgeVertex_.reserve(nH);
     for (int h = 0; h < nH; ++h) {
       if (P.heEdge_[h] >= 0) continue;
       const int e = static_cast<int>(P.edgeHalfEdge_.size());
       P.edgeHalfEdge_.push_back(h);
+      P.edgeVertex_.push_back(P.heOrigin(h));
+      P.edgeVertex_.push_back(P.heTarget(h));
       P.heEdge_[h] = e;
       P.heEdge_[P.heTwin_[h]] = e;
     }
