@@ -365,7 +365,7 @@ int ConvexPolyhedron<T>::support(const Vec3<T>& d, int hint) const {
       if (val > top) {
         top = val;
         next = w;
-      } else if (next < 0 && tied < 0 && val == best && detail::surelyUphill(d, vertices_[v], vertices_[w])) {
+      } else if (val == best && next < 0 && tied < 0 && detail::surelyUphill(d, vertices_[v], vertices_[w])) {
         tied = w;
       }
     }
