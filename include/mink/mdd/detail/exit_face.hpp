@@ -213,22 +213,15 @@ class ExitFaceSearch {
     }
     nearestArcs(F_.P(), est.vertexP, unitOrder(est.normal), cache_.edgesP);
     nearestArcs(F_.Q(), est.vertexQ, unitOrder(Vec3<T>(F_.R().transpose() * est.normal)), cache_.edgesQ);
-    // Each edge's arc made once for the (at most K x K) pairs.
-    constexpr int K = defaults::kMddPortalEdgeCandidates;
-    typename PairFrame<T>::ArcQ arcsQ[K];
-    const int nq = static_cast<int>(cache_.edgesQ.size());
-    for (int j = 0; j < nq; ++j) arcsQ[j] = F_.arcQ(cache_.edgesQ[j]);
     MFace<T> bestEE;
-    for (int ep : cache_.edgesP) {
-      const typename PairFrame<T>::ArcP arcP = F_.arcP(ep);
-      for (int j = 0; j < nq; ++j) {
+    for (int ep : cache_.edgesP)
+      for (int eq : cache_.edgesQ) {
         if (!budget.take()) return false;
-        const MFace<T> m = F_.ee(arcP, arcsQ[j]);
+        const MFace<T> m = F_.ee(ep, eq);
         if (!m.valid()) continue;
         ++res_.visitedEE;
         if (obj.better(m, bestEE)) bestEE = m;
       }
-    }
     if (obj.num(bestEE) > T(0) && obj.better(bestEE, best) && check_.certifies(bestEE))
       hit = bestEE;
     return true;

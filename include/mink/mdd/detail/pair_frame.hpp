@@ -239,42 +239,18 @@ class PairFrame {
   /// The crossing is decided by the exact signs of the four volumes of the given normals
   /// (arc_intersection.hpp): the rounded volumes where they exceed the filter's bound (made
   /// once per pair), det3Sign / dotSign on the same vectors where they do not.
-  MFace<T> ee(int ep, int eq) const { return ee(arcP(ep), arcQ(eq)); }
-
-  /// An edge of P with what ee() needs of it alone: its faces' normals a, b and the plane
-  /// of its Gauss arc nP = b × a (or the edge, edgePlaneP: eP). Made once where an edge
-  /// meets several edges of Q (the candidate pairs at a vertex).
-  struct ArcP {
-    int e;
-    Vec3<T> a, b, nP;
-    bool eP;
-  };
-  /// An edge of Q with its faces' normals c, d in P's frame.
-  struct ArcQ {
-    int e;
-    Vec3<T> c, d;
-  };
-  ArcP arcP(int ep) const {
-    ArcP x{ep, P_.faceNormal(P_.edgeFaces(ep).first), P_.faceNormal(P_.edgeFaces(ep).second), Vec3<T>(), false};
-    x.nP = x.b.cross(x.a);
-    x.eP = edgePlaneP(x.nP, ep);
-    return x;
-  }
-  ArcQ arcQ(int eq) const { return ArcQ{eq, qNormal(Q_.edgeFaces(eq).first), qNormal(Q_.edgeFaces(eq).second)}; }
-
-  /// ee(ep, eq) from the edges' arcs.
-  MFace<T> ee(const ArcP& arcp, const ArcQ& arcq) const {
+  MFace<T> ee(int ep, int eq) const {
     MFace<T> m;
-    const int ep = arcp.e, eq = arcq.e;
-    const Vec3<T>& a = arcp.a;
-    const Vec3<T>& b = arcp.b;
-    const Vec3<T>& c = arcq.c;
-    const Vec3<T>& d = arcq.d;
+    const Vec3<T>& a = P_.faceNormal(P_.edgeFaces(ep).first);
+    const Vec3<T>& b = P_.faceNormal(P_.edgeFaces(ep).second);
+    const Vec3<T> c = qNormal(Q_.edgeFaces(eq).first), d = qNormal(Q_.edgeFaces(eq).second);
+    const auto vp = P_.edgeVertices(ep);
+    const auto vq = Q_.edgeVertices(eq);
     // The four volumes of arc_intersection.hpp: det[c b a] = c · (b × a) and
     // det[a d c] = a · (d × c), the arcs' great-circle planes taken once each (or the
     // edges themselves: edgePlaneP / edgePlaneQ).
-    const Vec3<T>& nP = arcp.nP;
-    const bool eP = arcp.eP;
+    Vec3<T> nP = b.cross(a);
+    const bool eP = edgePlaneP(nP, ep);
     const T cba = c.dot(nP), dba = d.dot(nP);
     // Most pairs end here: c and d certainly on one side of P's arc plane (so are −c and
     // −d), and the arcs are disjoint whatever the other two signs (classifyArcSigns).
@@ -312,8 +288,6 @@ class PairFrame {
       const Vec3<T> onQ = -(absValue(vol.dba) * c + absValue(vol.cba) * d);
       if (!(onQ.dot(dir) > T(0))) return m;
     }
-    const auto vp = P_.edgeVertices(ep);
-    const auto vq = Q_.edgeVertices(eq);
     const Vec3<T> p0 = P_.vertex(vp.first);
     const Vec3<T> q0 = q(vq.first);
     // Q's edge direction from its own coordinates, then rotated: q(b) − q(a) would lose
