@@ -487,6 +487,7 @@ CaseReport checkCase(const std::string& name, const std::vector<Vec3<T>>& points
     // hint out of range (the descent).
     from.check("supportFrom(d, hint, 1 << 30)", k, d, H.supportFrom(d, hintDist(rng), 1 << 30), max);
     from.check("supportFrom(d, hint, 0)", k, d, H.supportFrom(d, hintDist(rng), 0), max);
+    from.check("supportFrom(d, hint, -1)", k, d, H.supportFrom(d, hintDist(rng), -1), max);
     from.check("supportFrom(d, hint, 2)", k, d, H.supportFrom(d, hintDist(rng), 2), max);
     from.check("supportFrom(d, previous answer, 8)", k, d,
                H.supportFrom(d, k > 0 ? H.support(dirs[k - 1]) : 0, 8), max);

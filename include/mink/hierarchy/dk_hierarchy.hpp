@@ -141,16 +141,16 @@ class DKHierarchy {
     return supportImpl<true>(direction, &stats);
   }
 
-  // ---- statistics ----
   /// As support(direction), warm-started: a hill-climb on L0 from the ORIGINAL vertex
   /// `hint` (moving to the strictly best neighbour while one is strictly better, the
   /// descent's own last step) if it stops within `maxMoves` moves; else the descent from
   /// the top (so at most maxMoves climbing moves are lost). For a direction near the one
   /// that gave `hint` (an iterative method's next step, the next frame) the climb is a
   /// few moves over neighbouring memory, against the descent's reads on every level
-  /// (memory-bound on large shapes). hint out of range: the descent.
+  /// (memory-bound on large shapes). hint out of range: the descent; maxMoves < 0 as 0.
   int supportFrom(const Vec3<T>& direction, int hint, int maxMoves) const;
 
+  // ---- statistics ----
   /// Number of levels, >= 1; level 0 is the shape itself, level numLevels()-1 the top.
   int numLevels() const { return static_cast<int>(levels_.size()); }
   /// Number of vertices of level i.

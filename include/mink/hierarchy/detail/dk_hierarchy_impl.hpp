@@ -503,7 +503,7 @@ int DKHierarchy<T>::climbL0(const Vec3<T>& d, int v, T best, long long maxMoves,
     }
     if constexpr (kCount) stats->evaluations += e - b;
     if (next < 0) return v;
-    if (moves == maxMoves) return -1;
+    if (moves >= maxMoves) return -1;
     if constexpr (kCount) ++stats->moves;
     v = next;
   }
