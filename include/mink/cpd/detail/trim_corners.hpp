@@ -82,9 +82,12 @@ int Trimmer<T>::cornerOn(const TrimKey& key, int F, std::uint64_t cut, int ia, i
       x[k] = T(h.x[k].mid());
       tight = T(h.x[k].hi() - h.x[k].lo()) <= std::ldexp(T(1), -40) * (absValue(x[k]) + scale);
     }
+    CornerL wide;  // made here: kept for the corner's exact predicates
     if (!tight && std::numeric_limits<long double>::digits > std::numeric_limits<FloatOf>::digits) {
-      IVL X[3], W;
+      IVL* X = wide.X;
+      IVL& W = wide.W;
       homogeneous<IVL>(key, X, W);
+      wide.ready = true;
       tight = W.excludesZero();
       for (int k = 0; k < 3 && tight; ++k) {
         const IVL q = X[k] / W;
@@ -99,7 +102,12 @@ int Trimmer<T>::cornerOn(const TrimKey& key, int F, std::uint64_t cut, int ia, i
       const FloatOf w = W.approx();
       for (int k = 0; k < 3; ++k) x[k] = w != FloatOf(0) ? T(X[k].approx() / w) : T((a[k] + b[k]) / T(2));
     }
-    return addCorner(key, x, h);
+    const int id = addCorner(key, x, h);
+    if (wide.ready) {
+      if (cornerL_.size() < keys_.size()) cornerL_.resize(keys_.size());
+      cornerL_[static_cast<std::size_t>(id)] = wide;
+    }
+    return id;
   }
 }
 
@@ -165,7 +173,7 @@ int Trimmer<T>::side(int F, int id, std::uint64_t cut) const {
   // from the inputs that name the lines (exactly), not from the rounded corner.
   if (!key.isPoint())
     for (const std::uint64_t l : key.k)
-      if (l != TrimLabel::kNone && l != TrimLabel::plane(F) && sameLine(F, l, cut)) return 0;
+      if (l != TrimLabel::kNone && l != TrimLabel::plane(F) && sameLineCached(F, l, cut)) return 0;
   if constexpr (!ScalarTraits<T>::isExact) {
     if (!key.isPoint()) return exactSide(F, id, cut);
   }
@@ -183,6 +191,18 @@ int Trimmer<T>::side(int F, int id, std::uint64_t cut) const {
   const Soup& f = soup_[static_cast<std::size_t>(F)];
   const int u = TrimLabel::edgeFirst(cut), v = TrimLabel::edgeSecond(cut);
   return f.axisSign * orient2d(mCoord_[u], mCoord_[v], x, f.axis);
+}
+
+template <class T>
+bool Trimmer<T>::sameLineCached(int F, std::uint64_t l, std::uint64_t cut) const {
+  // F matters only to two edge lines (compared in F's projection).
+  const bool edges = TrimLabel::isEdge(l) && TrimLabel::isEdge(cut);
+  const TrimKey key{{std::min(l, cut), std::max(l, cut), edges ? static_cast<std::uint64_t>(F) : TrimLabel::kNone}};
+  const auto it = sameLine_.find(key);
+  if (it != sameLine_.end()) return it->second != 0;
+  const bool same = sameLine(F, l, cut);
+  sameLine_.emplace(key, same ? 1 : 0);
+  return same;
 }
 
 template <class T>
@@ -255,36 +275,53 @@ void Trimmer<T>::homogeneous(const TrimKey& key, N X[3], N& W) const {
       for (int a = 0; a < 3; ++a) X[a] = p[a] * W + s * d[a];
       return;
     }
-    N n[3], k;
-    planeN(o, n, k);
+    N bn[3], bk;
+    const N *n, *k;
+    planeCached(o, n, k, bn, bk);
     W = dot(n, d);
-    const N s = k - dot(n, p);
+    const N s = *k - dot(n, p);
     for (int a = 0; a < 3; ++a) X[a] = p[a] * W + s * d[a];
     return;
   }
-  N n1[3], n2[3], n3[3], k1, k2, k3, c23[3], c31[3], c12[3];
-  planeN(key.k[0], n1, k1);
-  planeN(key.k[1], n2, k2);
-  planeN(key.k[2], n3, k3);
+  N b1[3], b2[3], b3[3], bk1, bk2, bk3, c23[3], c31[3], c12[3];
+  const N *n1, *n2, *n3, *k1, *k2, *k3;
+  planeCached(key.k[0], n1, k1, b1, bk1);
+  planeCached(key.k[1], n2, k2, b2, bk2);
+  planeCached(key.k[2], n3, k3, b3, bk3);
   cross(n2, n3, c23);
   cross(n3, n1, c31);
   cross(n1, n2, c12);
   W = dot(n1, c23);
-  for (int a = 0; a < 3; ++a) X[a] = k1 * c23[a] + k2 * c31[a] + k3 * c12[a];
+  for (int a = 0; a < 3; ++a) X[a] = *k1 * c23[a] + *k2 * c31[a] + *k3 * c12[a];
+}
+
+template <class T>
+template <class N>
+void Trimmer<T>::planeCached(std::uint64_t l, const N*& n, const N*& k, N boxN[3], N& boxK) const {
+  if constexpr (!ScalarTraits<T>::isExact) {
+    if (TrimLabel::isPlane(l)) {
+      std::vector<PlaneCacheOf<N>>& cache = planeCacheFor<N>();
+      if (cache.size() < soup_.size()) cache.resize(soup_.size());  // soup_ is complete: no later growth
+      PlaneCacheOf<N>& c = cache[static_cast<std::size_t>(TrimLabel::index(l))];
+      if (!c.ready) {
+        planeN<N>(l, c.n, c.k);
+        c.ready = true;
+      }
+      n = c.n;
+      k = &c.k;
+      return;
+    }
+  }
+  planeN<N>(l, boxN, boxK);
+  n = boxN;
+  k = &boxK;
 }
 
 template <class T>
 void Trimmer<T>::planeIV(std::uint64_t l, const IV*& n, const IV*& k) const {
   if (TrimLabel::isPlane(l)) {
-    const std::size_t g = static_cast<std::size_t>(TrimLabel::index(l));
-    if (planeCache_.size() < soup_.size()) planeCache_.resize(soup_.size());
-    PlaneIVCache& c = planeCache_[g];
-    if (!c.ready) {
-      planeN<IV>(l, c.n, c.k);
-      c.ready = true;
-    }
-    n = c.n;
-    k = &c.k;
+    IV unusedN[3], unusedK;
+    planeCached<IV>(l, n, k, unusedN, unusedK);
     return;
   }
   const int b = TrimLabel::index(l);
@@ -317,9 +354,10 @@ N Trimmer<T>::cutValue(int F, std::uint64_t cut, const N X[3], const N& W) const
     const N c = d[i] * r[j] - d[j] * r[i];
     return f.axisSign > 0 ? c : N(-c);
   }
-  N n[3], k;
-  planeN(cut, n, k);
-  const N val = dot(n, X) - k * W;
+  N bn[3], bk;
+  const N *n, *k;
+  planeCached(cut, n, k, bn, bk);
+  const N val = dot(n, X) - *k * W;
   if (TrimLabel::isBox(cut) && TrimLabel::index(cut) % 2 == 0) return -val;  // outside: below the lower face
   return val;
 }
@@ -342,24 +380,36 @@ int Trimmer<T>::filteredSide(int F, int id, std::uint64_t cut) const {
 
 template <class T>
 template <class Value>
-int Trimmer<T>::namedSign(const TrimKey& key, const Value& value) const {
+int Trimmer<T>::namedSign(int id, const Value& value) const {
+  const TrimKey& key = keys_[static_cast<std::size_t>(id)];
   // Where long double is wider than FloatOf (x87: 11 more bits), a second filter: the
   // corner recomputed from its name in long double intervals. The corners that reach here
   // mostly sit at a vertex of M within the double filter's width of the cut but not on it
   // (an edge-edge facet's fourth point is off its plane by a rounding); this stage settles
   // most of them at a fraction of the expansions' cost (README, "The long double stage").
   if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<FloatOf>::digits) {
-    IVL X[3], W;
-    homogeneous<IVL>(key, X, W);
-    const int sw = W.certainSign();
+    if (cornerL_.size() < keys_.size()) cornerL_.resize(keys_.size());
+    CornerL& c = cornerL_[static_cast<std::size_t>(id)];
+    if (!c.ready) {
+      homogeneous<IVL>(key, c.X, c.W);
+      c.ready = true;
+    }
+    const int sw = c.W.certainSign();
     if (sw != 0) {
-      const int sv = value(X, W).certainSign();
+      const int sv = value(c.X, c.W).certainSign();
       if (sv != 0) return sv * sw;
     }
   }
-  EX X[3], W;
-  homogeneous<EX>(key, X, W);
-  return value(X, W).sign() * W.sign();
+  if (cornerXIndex_.size() < keys_.size()) cornerXIndex_.resize(keys_.size(), -1);
+  int& slot = cornerXIndex_[static_cast<std::size_t>(id)];
+  if (slot < 0) {
+    if (cornerXCount_ == cornerX_.size()) cornerX_.emplace_back();
+    slot = static_cast<int>(cornerXCount_++);
+    CornerX& c = cornerX_[static_cast<std::size_t>(slot)];
+    homogeneous<EX>(key, c.X, c.W);
+  }
+  const CornerX& c = cornerX_[static_cast<std::size_t>(slot)];
+  return value(c.X, c.W).sign() * c.W.sign();
 }
 
 template <class T>
@@ -368,7 +418,7 @@ int Trimmer<T>::exactSide(int F, int id, std::uint64_t cut) const {
   const TrimKey cached{{static_cast<std::uint64_t>(id), cut, TrimLabel::isEdge(cut) ? static_cast<std::uint64_t>(F) : TrimLabel::kNone}};
   const auto it = exactSide_.find(cached);
   if (it != exactSide_.end()) return it->second;
-  const int sv = namedSign(keys_[static_cast<std::size_t>(id)], [&](const auto* X, const auto& W) {
+  const int sv = namedSign(id, [&](const auto* X, const auto& W) {
     using N = std::decay_t<decltype(W)>;
     return cutValue<N>(F, cut, X, W);
   });
@@ -398,7 +448,7 @@ int Trimmer<T>::dotSign(int id, int p, int q) const {
         if (sv != 0) return sv * sw;
       }
     }
-    return namedSign(key, value);
+    return namedSign(id, value);
   } else {
     const Vec3<T>& x = coords_[static_cast<std::size_t>(id)];
     return detail::sign(T((x - mCoord_[static_cast<std::size_t>(p)]).dot(mCoord_[static_cast<std::size_t>(q)] - mCoord_[static_cast<std::size_t>(p)])));

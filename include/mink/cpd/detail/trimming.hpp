@@ -276,7 +276,13 @@ class Trimmer {
     coords_.clear();
     hbox_.clear();
     planeCache_.clear();
+    planeCacheL_.clear();
+    planeCacheX_.clear();
+    cornerL_.clear();
+    cornerXIndex_.clear();
+    cornerXCount_ = 0;
     exactSide_.clear();
+    sameLine_.clear();
     witnesses_.clear();
     nextWitness_ = 0;
     final_.clear();
@@ -376,6 +382,8 @@ class Trimmer {
   /// line lies in a plane when both its ends do; two plane traces coincide when the planes
   /// do (the case of two different planes through one line of F is not detected).
   bool sameLine(int F, std::uint64_t l, std::uint64_t cut) const;
+  /// sameLine, once per pair of lines (and F, for two edge lines).
+  bool sameLineCached(int F, std::uint64_t l, std::uint64_t cut) const;
 
   // ----- Exact predicates on constructed corners (floating-point T) ------------------
   //
@@ -410,6 +418,10 @@ class Trimmer {
   void homogeneous(const TrimKey& key, N X[3], N& W) const;
   /// planeN in interval arithmetic, cached per polygon (box faces are exact).
   void planeIV(std::uint64_t l, const IV*& n, const IV*& k) const;
+  /// planeN of label l: a polygon's from its cache (N: IV, IVL or EX), a box face's made
+  /// in boxN, boxK.
+  template <class N>
+  void planeCached(std::uint64_t l, const N*& n, const N*& k, N boxN[3], N& boxK) const;
 
   /// The value whose sign (times sign(W)) is side(): see side().
   template <class N>
@@ -421,7 +433,7 @@ class Trimmer {
   /// The exact sign of value(X, W) · sign(W) for the corner named `key` (value: a
   /// polynomial in X / W, called with long double intervals, then with expansions).
   template <class Value>
-  int namedSign(const TrimKey& key, const Value& value) const;
+  int namedSign(int id, const Value& value) const;
   /// Exact sign of (x − p) · (q − p) for corner id and points p, q (ids of a_i − b_j).
   int dotSign(int id, int p, int q) const;
 
@@ -521,13 +533,43 @@ class Trimmer {
   std::vector<TrimKey> keys_;
   std::vector<Vec3<T>> coords_;
   std::vector<Homog> hbox_;  // floating T: each corner's enclosure (empty for points)
-  struct PlaneIVCache {
-    IV n[3], k;
+  template <class N>
+  struct PlaneCacheOf {
+    N n[3], k;
     bool ready = false;
   };
-  mutable std::vector<PlaneIVCache> planeCache_;  // floating T: per polygon, made on first use
+  using PlaneIVCache = PlaneCacheOf<IV>;
+  // Floating T: each polygon's plane in the number types of the predicates on corners,
+  // made on first use (a corner's three planes are shared with the other corners they cut).
+  mutable std::vector<PlaneIVCache> planeCache_;
+  mutable std::vector<PlaneCacheOf<IVL>> planeCacheL_;
+  mutable std::vector<PlaneCacheOf<EX>> planeCacheX_;
+  template <class N>
+  std::vector<PlaneCacheOf<N>>& planeCacheFor() const {
+    if constexpr (std::is_same<N, IV>::value)
+      return planeCache_;
+    else if constexpr (std::is_same<N, IVL>::value)
+      return planeCacheL_;
+    else
+      return planeCacheX_;
+  }
   mutable PlaneIVCache boxCache_[6];
+  // Floating T with a wider long double: a corner's X / W in long double intervals, made
+  // from its name on its first exact predicate (a corner meets several cuts).
+  struct CornerL {
+    IVL X[3], W;
+    bool ready = false;
+  };
+  mutable std::vector<CornerL> cornerL_;
+  // The same in expansions, for the corners whose sides the intervals cannot tell.
+  struct CornerX {
+    EX X[3], W;
+  };
+  mutable std::vector<int> cornerXIndex_;  // per corner: its entry of cornerX_, or −1
+  mutable std::vector<CornerX> cornerX_;
+  mutable std::size_t cornerXCount_ = 0;
   mutable FlatHashMap<TrimKey, int, TrimKeyHash> exactSide_;  // (corner, cut, F) -> exact side
+  mutable FlatHashMap<TrimKey, int, TrimKeyHash> sameLine_;   // (lines sorted, F or kNone) -> 1 / 0
   // The last triangle pairs found overlapping (a ring of kWitnesses).
   static constexpr std::size_t kWitnesses = 16;
   mutable std::vector<std::pair<int, int>> witnesses_;
