@@ -110,6 +110,61 @@ TEST(Interval, LongDoubleEnclosesDegreeNinePolynomials) {
     EXPECT_GT(decidedOnlyByLongDouble, 50);  // where long double is wider, it decides more
 }
 
+// The product by the signs of the bounds (nine cases, four products only when both hold 0):
+// every product of points of the two intervals is inside, and the bounds are the extreme
+// endpoint products rounded outward by about an ulp, not wider. Intervals of every sign
+// pattern, zeros and infinite bounds included; 0 times an infinite bound is the whole line.
+TEST(Interval, ProductOfEverySignPatternIsTheEndpointHull) {
+  std::mt19937 rng(23);
+  const double inf = std::numeric_limits<double>::infinity();
+  auto bound = [&]() {
+    switch (rng() % 8) {
+      case 0:
+        return 0.0;
+      case 1:
+        return (rng() & 1) ? inf : -inf;
+      default:
+        return ((rng() & 1) ? 1.0 : -1.0) * std::ldexp(0.5 + (rng() % 1000) / 2000.0, static_cast<int>(rng() % 40) - 20);
+    }
+  };
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int cases[3][3] = {};
+  for (int trial = 0; trial < 20000; ++trial) {
+    double a0 = bound(), a1 = bound(), b0 = bound(), b1 = bound();
+    if (a0 > a1) std::swap(a0, a1);
+    if (b0 > b1) std::swap(b0, b1);
+    const Interval a(a0, a1), b(b0, b1), r = a * b;
+    const double p[4] = {a0 * b0, a0 * b1, a1 * b0, a1 * b1};
+    bool nan = false;
+    double lo = inf, hi = -inf;
+    for (double x : p) {
+      nan = nan || std::isnan(x);
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+    if (nan) {
+      // 0 times an infinite bound: the whole line, or (when the other products settle
+      // it) an interval still holding every finite product.
+      ASSERT_LE(r.lo(), 0.0) << a0 << " " << a1 << " " << b0 << " " << b1;
+      ASSERT_GE(r.hi(), 0.0) << a0 << " " << a1 << " " << b0 << " " << b1;
+      continue;
+    }
+    ++cases[a0 >= 0 ? 0 : (a1 <= 0 ? 1 : 2)][b0 >= 0 ? 0 : (b1 <= 0 ? 1 : 2)];
+    const double slack = std::ldexp(1.0, -51);
+    ASSERT_LE(r.lo(), lo) << a0 << " " << a1 << " " << b0 << " " << b1;
+    ASSERT_GE(r.hi(), hi) << a0 << " " << a1 << " " << b0 << " " << b1;
+    if (std::isfinite(lo)) ASSERT_GE(r.lo(), lo - std::abs(lo) * slack - 1e-300) << a0 << " " << a1 << " " << b0 << " " << b1;
+    if (std::isfinite(hi)) ASSERT_LE(r.hi(), hi + std::abs(hi) * slack + 1e-300) << a0 << " " << a1 << " " << b0 << " " << b1;
+    // Points inside, multiplied exactly: inside the product.
+    if (std::isfinite(a0) && std::isfinite(a1) && std::isfinite(b0) && std::isfinite(b1)) {
+      const double x = a0 + (a1 - a0) * unit(rng), y = b0 + (b1 - b0) * unit(rng);
+      if (x >= a0 && x <= a1 && y >= b0 && y <= b1) ASSERT_TRUE(encloses(r, Q(x) * Q(y))) << x << " " << y;
+    }
+  }
+  for (auto& row : cases)
+    for (int n : row) EXPECT_GT(n, 100);  // every sign pattern was met
+}
+
 // A tie is never decided: a value that is exactly 0 gives an interval holding 0.
 TEST(Interval, NeverDecidesAnExactZero) {
   const Interval x(0.1), y(0.3), z(0.7);

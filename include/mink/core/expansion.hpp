@@ -130,13 +130,36 @@ class IntervalOf {
   friend Interval operator-(const Interval& a, const Interval& b) { return {down(a.lo_ - b.hi_), up(a.hi_ - b.lo_)}; }
   friend Interval operator-(const Interval& a) { return {-a.hi_, -a.lo_}; }
   friend Interval operator*(const Interval& a, const Interval& b) {
-    const F p[4] = {a.lo_ * b.lo_, a.lo_ * b.hi_, a.hi_ * b.lo_, a.hi_ * b.hi_};
-    F lo = p[0], hi = p[0];
-    for (F x : p) {
-      if (std::isnan(x)) return {-std::numeric_limits<F>::infinity(), std::numeric_limits<F>::infinity()};
-      lo = std::min(lo, x);
-      hi = std::max(hi, x);
+    // By the signs of the bounds: the two products that are the extremes (four only when
+    // both intervals hold 0). The same rounded products as the min and max of all four;
+    // a NaN bound (or 0 times an infinite one) gives the whole line.
+    F lo, hi;
+    if (a.lo_ >= F(0)) {
+      if (b.lo_ >= F(0))
+        lo = a.lo_ * b.lo_, hi = a.hi_ * b.hi_;
+      else if (b.hi_ <= F(0))
+        lo = a.hi_ * b.lo_, hi = a.lo_ * b.hi_;
+      else
+        lo = a.hi_ * b.lo_, hi = a.hi_ * b.hi_;
+    } else if (a.hi_ <= F(0)) {
+      if (b.lo_ >= F(0))
+        lo = a.lo_ * b.hi_, hi = a.hi_ * b.lo_;
+      else if (b.hi_ <= F(0))
+        lo = a.hi_ * b.hi_, hi = a.lo_ * b.lo_;
+      else
+        lo = a.lo_ * b.hi_, hi = a.lo_ * b.lo_;
+    } else if (b.lo_ >= F(0)) {
+      lo = a.lo_ * b.hi_, hi = a.hi_ * b.hi_;
+    } else if (b.hi_ <= F(0)) {
+      lo = a.hi_ * b.lo_, hi = a.lo_ * b.lo_;
+    } else {
+      const F l1 = a.lo_ * b.hi_, l2 = a.hi_ * b.lo_, h1 = a.lo_ * b.lo_, h2 = a.hi_ * b.hi_;
+      if (std::isnan(l1) || std::isnan(l2) || std::isnan(h1) || std::isnan(h2))
+        return {-std::numeric_limits<F>::infinity(), std::numeric_limits<F>::infinity()};
+      lo = l1 < l2 ? l1 : l2;
+      hi = h1 > h2 ? h1 : h2;
     }
+    if (std::isnan(lo) || std::isnan(hi)) return {-std::numeric_limits<F>::infinity(), std::numeric_limits<F>::infinity()};
     return {down(lo), up(hi)};
   }
   /// Enclosure of a / b; the whole line when b contains 0.
@@ -229,6 +252,7 @@ class ExpansionOf {
       sum(r.c_, s.c_, t);
       r.c_.swap(t);
     }
+    if (r.c_.size() > 4) r.c_ = r.compressed();
     return r;
   }
   Expansion& operator+=(const Expansion& b) { return *this = *this + b; }
