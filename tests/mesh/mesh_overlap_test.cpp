@@ -310,6 +310,69 @@ TEST(MeshOverlap, TrySetPlacement) {
   }
 }
 
+// focusNear: the queries whose y lies within reach of the centre test only the pairs the
+// focus gathered; their answers (and statuses) must be those of the traversal, which an
+// unfocused object at the same placement gives, and the boundary answers those of the
+// exact brute force. Centres at touching placements (bisection along random directions),
+// y all over the focus's cube, on its corners, and just beyond it (traversal again).
+TEST(MeshOverlap, FocusedQueriesAnswerAsTheTraversal) {
+  std::mt19937 rng(4242u);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const std::vector<std::pair<Mesh, Mesh>> pairs = {{fromShape(mink_test::torus(12, 8)), fromShape(mink_test::lBlock())},
+                                                    {fromShape(mink_test::torus(16, 12)), fromShape(mink_test::torus(12, 8))},
+                                                    {fromShape(mink_test::lBlock()), fromShape(mink_test::uBlock())}};
+  int focused = 0, traversed = 0, overlapping = 0, separate = 0;
+  for (const auto& [A, B] : pairs) {
+    for (int pose = 0; pose < 6; ++pose) {
+      const M3 R = randomRotation(rng);
+      const V t(0.1 * u(rng), 0.1 * u(rng), 0.1 * u(rng));
+      mink::MeshOverlap<double> o(A, B, R, t), plain(A, B, R, t);
+      // The touching translation along a random direction (B pushed out of A).
+      const V d = mink_test::randomUnitVector(rng);
+      double lo = 0.0, hi = 4.0 * (A.extent() + B.extent());
+      for (int k = 0; k < 40; ++k) ((plain.overlaps(V((lo + hi) / 2 * d)) ? lo : hi) = (lo + hi) / 2);
+      const V c = hi * d;
+      const double reach = 0.02 * (A.extent() + B.extent()) * (1 + pose % 3);
+      long long gathered = 0, plainNear = 0;
+      o.focusNear(c, reach, 0.0, [&](int, int) { ++gathered; });
+      plain.forNearTrianglePairs(c, reach, [&](int, int) { ++plainNear; });
+      EXPECT_GE(gathered, plainNear);  // at least the pairs within reach
+      std::vector<V> ys;
+      for (int k = 0; k < 60; ++k) ys.push_back(c + reach * V(u(rng), u(rng), u(rng)));
+      for (int k = 0; k < 8; ++k) ys.push_back(c + reach * V(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+      for (int k = 0; k < 10; ++k) ys.push_back(c + reach * (1 + 1e-3 * (k + 1)) * mink_test::randomUnitVector(rng).cwiseSign());
+      for (const V& y : ys) {
+        const bool inside = (y - c).cwiseAbs().maxCoeff() <= reach;
+        const bool ours = o.overlaps(y);
+        const mink::OverlapResult r = o.result();
+        const bool theirs = plain.overlaps(y);
+        ASSERT_EQ(ours, theirs) << "pose " << pose << " y " << y.transpose();
+        ASSERT_EQ(r.status == OverlapStatus::BoundariesMeet, plain.result().status == OverlapStatus::BoundariesMeet);
+        if (A.numTriangles() * B.numTriangles() <= 10000) {  // the brute force on the smaller pairs
+          std::vector<V> placed(B.vertices().size());
+          for (std::size_t v = 0; v < placed.size(); ++v) placed[v] = o.placedVertexB(static_cast<int>(v));
+          ASSERT_EQ(r.status == OverlapStatus::BoundariesMeet, bruteForceBoundariesMeet(A, placed, B));
+        }
+        // The focus answered inside (its pair count as node pairs), the traversal outside.
+        if (inside && r.status != OverlapStatus::BoundariesMeet) {
+          EXPECT_EQ(r.nodePairs, gathered);
+          ++focused;
+        }
+        if (!inside) ++traversed;
+        (ours ? overlapping : separate)++;
+      }
+      // A new placement forgets the focus.
+      o.setPlacement(R, t);
+      EXPECT_EQ(o.overlaps(c), plain.overlaps(c));
+      EXPECT_EQ(o.result().nodePairs, plain.result().nodePairs);
+    }
+  }
+  EXPECT_GT(focused, 500);
+  EXPECT_GT(traversed, 100);
+  EXPECT_GT(overlapping, 200);  // near touching: both answers, many times
+  EXPECT_GT(separate, 200);
+}
+
 TEST(MeshOverlap, WarmQueriesDoNotAllocate) {
   if (!mink_test::kCountAllocations) GTEST_SKIP() << "allocation counting is off under AddressSanitizer";
   const Mesh torus = fromShape(mink_test::torus(12, 8));

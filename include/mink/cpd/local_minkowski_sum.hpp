@@ -318,8 +318,10 @@ class LocalMinkowskiSum {
     double reach = overlap_.boxScale() + detail::toDouble(region_.radius);
     for (int a = 0; a < 3; ++a) reach += std::abs(detail::toDouble(region_.centre[a]));
     const double pad = detail::toDouble(region_.radius) + 16.0 * u * reach;
-    const long long visited =
-        overlap_.forNearTrianglePairs(region_.centre, pad, [&](int fa, int fb) { trianglePairFeatures(fa, fb); });
+    // The same pairs become the overlap tests' focus: the trimming tests its patches at
+    // points inside the ball (MeshOverlap::focusNear).
+    const long long visited = overlap_.focusNear(region_.centre, detail::toDouble(region_.radius), pad,
+                                                 [&](int fa, int fb) { trianglePairFeatures(fa, fb); });
     patch_.nodePairs = static_cast<int>(std::min<long long>(visited, std::numeric_limits<int>::max()));
   }
 

@@ -125,6 +125,7 @@ class MeshOverlap {
   /// once B is placed. Allocates nothing when the placement is fine.
   [[nodiscard]] Error trySetPlacement(const Mat3<T>& rotation, const Vec3<T>& translation) {
     if (Error e = detail::checkRigidPlacement(rotation, translation, "MeshOverlap", "placement")) return e;
+    focused_ = false;
     R_ = rotation;
     t_ = translation;
     for (std::size_t v = 0; v < bPoints_.size(); ++v) bPoints_[v] = R_ * B_.vertex(static_cast<int>(v)) + t_;
@@ -205,6 +206,33 @@ class MeshOverlap {
 
   /// What decided the last overlaps() call, with traversal counts.
   const OverlapResult& result() const { return result_; }
+
+  /// Floating-point T: forNearTrianglePairs(centre, pad, near), keeping the pairs as a
+  /// focus for the queries that follow: a query whose y lies within `reach` (max norm) of
+  /// `centre` then tests only those pairs (a box test each, then the exact test) instead
+  /// of traversing both trees. The traversal's pad is grown to at least reach plus the
+  /// boxes' rounding, so that a pair left out cannot meet at any such y (near() may see a
+  /// few more pairs than `pad` alone would give). Other y, and every query after
+  /// unfocus() or a new placement, traverse. No answer depends on it (CPD's trimming: the
+  /// patches of one ball are tested at points inside it). Returns the node pairs visited.
+  template <class Near>
+  long long focusNear(const Vec3<T>& centre, double reach, double pad, Near&& near) {
+    static_assert(!ScalarTraits<T>::isExact, "MeshOverlap::focusNear: floating-point T only");
+    focused_ = false;
+    focusPairs_.clear();
+    focusCentre_ = toD(centre);
+    focusReach_ = reach >= 0.0 && std::isfinite(reach) ? reach : 0.0;
+    const double u = std::max(detail::toDouble(ScalarTraits<T>::epsilon()), std::ldexp(1.0, -52));
+    const double P = std::max(pad, focusReach_ + 16.0 * u * (boxScale_ + focusCentre_.cwiseAbs().maxCoeff() + focusReach_));
+    aTree_.anyPair(bTree_, focusCentre_, P, [&](int fa, int fb) {
+      focusPairs_.emplace_back(fa, fb);
+      near(fa, fb);
+      return false;
+    });
+    focused_ = std::isfinite(P);
+    return aTree_.pairsVisited();
+  }
+  void unfocus() { focused_ = false; }
 
   /// B's vertex v placed in A's frame and moved by the last query's y: the point every
   /// test of that query used.
@@ -293,7 +321,7 @@ class MeshOverlap {
   }
 
   bool boundariesMeet() {
-    if constexpr (!ScalarTraits<T>::isExact) return boxesMeet();
+    if constexpr (!ScalarTraits<T>::isExact) return focused_ && inFocus() ? focusedBoxesMeet() : boxesMeet();
     const SphereTree<T>& ta = A_.sphereTree();
     const SphereTree<T>& tb = B_.sphereTree();
     stack_.clear();
@@ -355,6 +383,45 @@ class MeshOverlap {
     result_.nodePairs = aTree_.pairsVisited();
     return met;
   }
+  // The focus (see focusNear()). Is y within reach of the centre, as the doubles compare?
+  bool inFocus() const {
+    const Eigen::Vector3d y = toD(y_);
+    for (int k = 0; k < 3; ++k)
+      if (!(std::abs(y[k] - focusCentre_[k]) <= focusReach_)) return false;
+    return true;
+  }
+  // boxesMeet over the focus's pairs. Why none is lost: triangles fa, fb that meet at y
+  // have boxes within boxesMeet's pad p = 4u (S + |y|∞) at offset y on every axis (S =
+  // boxScale_), hence within reach + p + u·reach at the offset c = centre (|y − c| <=
+  // reach as compared, one rounding); focusNear's traversal drops a pair only when two
+  // rounded sums (magnitudes under S + |c| + P, relative error u each) put them more
+  // than P apart, i.e. truly more than P − 2u (S + |c| + P) >= reach + 13u (S + |c| +
+  // reach), which exceeds reach + p + u·reach since |y| <= |c| + reach.
+  bool focusedBoxesMeet() {
+    const Eigen::Vector3d y = toD(y_);
+    const double u = std::max(detail::toDouble(ScalarTraits<T>::epsilon()), std::ldexp(1.0, -52));
+    const double pad = 4.0 * u * (boxScale_ + y.cwiseAbs().maxCoeff());
+    result_.nodePairs = static_cast<long long>(focusPairs_.size());
+    for (const std::pair<int, int>& fp : focusPairs_) {
+      const detail::Box3& a = aBoxes_[static_cast<std::size_t>(fp.first)];
+      const detail::Box3& b = bBoxes_[static_cast<std::size_t>(fp.second)];
+      bool apart = false;
+      for (int k = 0; k < 3 && !apart; ++k)
+        apart = a.lo[k] > b.hi[k] + y[k] + pad || b.lo[k] + y[k] > a.hi[k] + pad;
+      if (apart) continue;
+      ++result_.trianglePairs;
+      const auto& ia = A_.triangle(fp.first);
+      const auto& ib = B_.triangle(fp.second);
+      if (!trianglesIntersect(A_.vertex(ia[0]), A_.vertex(ia[1]), A_.vertex(ia[2]), Vec3<T>(bPoints_[ib[0]] + y_),
+                              Vec3<T>(bPoints_[ib[1]] + y_), Vec3<T>(bPoints_[ib[2]] + y_)))
+        continue;
+      result_.triangleA = fp.first;
+      result_.triangleB = fp.second;
+      return true;
+    }
+    return false;
+  }
+
   static Eigen::Vector3d toD(const Vec3<T>& x) {
     return Eigen::Vector3d(detail::toDouble(x[0]), detail::toDouble(x[1]), detail::toDouble(x[2]));
   }
@@ -420,6 +487,11 @@ class MeshOverlap {
   Mat3<T> bSplitR_ = Mat3<T>::Identity();  // the rotation B's tree was last split at
   double boxScale_ = 0.0;
   OverlapResult result_;
+  // Floating T: the focus (see focusNear()).
+  bool focused_ = false;
+  Eigen::Vector3d focusCentre_ = Eigen::Vector3d::Zero();
+  double focusReach_ = 0.0;
+  std::vector<std::pair<int, int>> focusPairs_;
 };
 
 /// meshesOverlap without exceptions: whether A at poseA and B at poseB (world frame) share
