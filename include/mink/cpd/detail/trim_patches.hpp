@@ -40,6 +40,12 @@ void Trimmer<T>::stitch() {
 
 template <class T>
 bool Trimmer<T>::sideCrossed(int F, int a, int b) const {
+  // Once per side: the two pieces that share it ask with its ends swapped (every test
+  // below is symmetric in a and b).
+  const TrimKey key{{static_cast<std::uint64_t>(F), static_cast<std::uint64_t>(std::min(a, b)),
+                     static_cast<std::uint64_t>(std::max(a, b))}};
+  const auto it = sideCrossed_.find(key);
+  if (it != sideCrossed_.end()) return it->second != 0;
   Box3 query;
   query.add(toD(coords_[static_cast<std::size_t>(a)]));
   query.add(toD(coords_[static_cast<std::size_t>(b)]));
@@ -62,6 +68,7 @@ bool Trimmer<T>::sideCrossed(int F, int a, int b) const {
         crossed = true;
     }
   });
+  sideCrossed_.emplace(key, crossed ? 1 : 0);
   return crossed;
 }
 

@@ -283,6 +283,7 @@ class Trimmer {
     cornerXCount_ = 0;
     exactSide_.clear();
     sameLine_.clear();
+    sideCrossed_.clear();
     witnesses_.clear();
     nextWitness_ = 0;
     final_.clear();
@@ -570,6 +571,7 @@ class Trimmer {
   mutable std::size_t cornerXCount_ = 0;
   mutable FlatHashMap<TrimKey, int, TrimKeyHash> exactSide_;  // (corner, cut, F) -> exact side
   mutable FlatHashMap<TrimKey, int, TrimKeyHash> sameLine_;   // (lines sorted, F or kNone) -> 1 / 0
+  mutable FlatHashMap<TrimKey, int, TrimKeyHash> sideCrossed_;  // (F, corner ids sorted) -> 1 / 0
   // The last triangle pairs found overlapping (a ring of kWitnesses).
   static constexpr std::size_t kWitnesses = 16;
   mutable std::vector<std::pair<int, int>> witnesses_;
