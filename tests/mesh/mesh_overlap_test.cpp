@@ -367,6 +367,23 @@ TEST(MeshOverlap, FocusedQueriesAnswerAsTheTraversal) {
       EXPECT_EQ(o.result().nodePairs, plain.result().nodePairs);
     }
   }
+  // A ball holding more than kMaxFocusPairs pairs keeps no focus: its queries traverse.
+  {
+    const Mesh& A = pairs[1].first;
+    const Mesh& B = pairs[1].second;
+    ASSERT_GT(static_cast<std::size_t>(A.numTriangles() * B.numTriangles()), mink::MeshOverlap<double>::kMaxFocusPairs);
+    const M3 R = randomRotation(rng);
+    mink::MeshOverlap<double> o(A, B, R, V::Zero()), plain(A, B, R, V::Zero());
+    const double reach = 10.0 * (A.extent() + B.extent());
+    long long gathered = 0;
+    o.focusNear(V::Zero(), reach, 0.0, [&](int, int) { ++gathered; });
+    EXPECT_EQ(gathered, static_cast<long long>(A.numTriangles()) * B.numTriangles());  // every pair is near
+    for (int k = 0; k < 20; ++k) {
+      const V y = 0.5 * (A.extent() + B.extent()) * V(u(rng), u(rng), u(rng));
+      ASSERT_EQ(o.overlaps(y), plain.overlaps(y));
+      EXPECT_EQ(o.result().nodePairs, plain.result().nodePairs);  // the traversal answered
+    }
+  }
   EXPECT_GT(focused, 500);
   EXPECT_GT(traversed, 100);
   EXPECT_GT(overlapping, 200);  // near touching: both answers, many times

@@ -212,8 +212,9 @@ class MeshOverlap {
   /// `centre` then tests only those pairs (a box test each, then the exact test) instead
   /// of traversing both trees. The traversal's pad is grown to at least reach plus the
   /// boxes' rounding, so that a pair left out cannot meet at any such y (near() may see a
-  /// few more pairs than `pad` alone would give). Other y, and every query after
-  /// unfocus() or a new placement, traverse. No answer depends on it (CPD's trimming: the
+  /// few more pairs than `pad` alone would give). Other y, every query after unfocus()
+  /// or a new placement, and all of them when more than kMaxFocusPairs pairs are near,
+  /// traverse. No answer depends on it (CPD's trimming: the
   /// patches of one ball are tested at points inside it). Returns the node pairs visited.
   template <class Near>
   long long focusNear(const Vec3<T>& centre, double reach, double pad, Near&& near) {
@@ -224,14 +225,22 @@ class MeshOverlap {
     focusReach_ = reach >= 0.0 && std::isfinite(reach) ? reach : 0.0;
     const double u = std::max(detail::toDouble(ScalarTraits<T>::epsilon()), std::ldexp(1.0, -52));
     const double P = std::max(pad, focusReach_ + 16.0 * u * (boxScale_ + focusCentre_.cwiseAbs().maxCoeff() + focusReach_));
+    bool tooMany = false;
     aTree_.anyPair(bTree_, focusCentre_, P, [&](int fa, int fb) {
-      focusPairs_.emplace_back(fa, fb);
+      if (!tooMany) {
+        tooMany = focusPairs_.size() == kMaxFocusPairs;
+        if (!tooMany) focusPairs_.emplace_back(fa, fb);
+      }
       near(fa, fb);
       return false;
     });
-    focused_ = std::isfinite(P);
+    focused_ = std::isfinite(P) && !tooMany;
     return aTree_.pairsVisited();
   }
+  /// The most pairs a focus keeps: a larger ball's queries traverse instead (scanning the
+  /// list costs a box test per pair and query; a traversal near touching costs about as
+  /// much as a few thousand of them). A search structure's choice, no effect on answers.
+  static constexpr std::size_t kMaxFocusPairs = 4096;
   void unfocus() { focused_ = false; }
 
   /// B's vertex v placed in A's frame and moved by the last query's y: the point every
