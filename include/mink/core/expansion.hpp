@@ -244,7 +244,11 @@ class ExpansionOf {
     return r;
   }
   friend Expansion operator-(const Expansion& a, const Expansion& b) { return a + (-b); }
-  friend Expansion operator*(const Expansion& a, const Expansion& b) {
+  friend Expansion operator*(const Expansion& x0, const Expansion& y0) {
+    // One scaled copy of the longer factor per component of the shorter, summed.
+    const bool swap = x0.c_.size() < y0.c_.size();
+    const Expansion& a = swap ? y0 : x0;
+    const Expansion& b = swap ? x0 : y0;
     Expansion r, s;
     Components t;
     for (F x : b.c_) {
