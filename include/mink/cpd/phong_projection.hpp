@@ -265,11 +265,15 @@ class PhongSurface {
     const Vec3<T> x = hit.point - o;
     hit.residual = hit.normal.cross(x).stableNorm();
     // Newton may stop one step short of the rounding floor: accept a residual at the
-    // rounding of the point's coordinates, too.
-    if (!hit.converged) {
-      const T scale = x.stableNorm() + e1.stableNorm() + e2.stableNorm();
+    // rounding of the point's coordinates, too. And a step that vanished away from a root
+    // (damped steps stalled where |F| has a non-zero minimum, as on the degenerate patches
+    // of faces in exact contact) is not a root: Definition 1 needs the residual itself
+    // small — at the rounding, with sqrt(eps) of the scene's size for ill-conditioned roots.
+    const T scale = x.stableNorm() + e1.stableNorm() + e2.stableNorm();
+    if (!hit.converged)
       hit.converged = hit.residual <= T(64) * eps * scale;
-    }
+    else
+      hit.converged = hit.residual <= std::sqrt(eps) * scale;
     const T tol = options.barycentricTolerance;
     hit.found = hit.converged && hit.lambda[0] >= -tol && hit.lambda[1] >= -tol && hit.lambda[2] >= -tol &&
                 hit.normal.dot(N) > T(0) && hit.normal.dot(x) > T(0);
