@@ -290,6 +290,80 @@ TEST(LocalMinkowskiSum, NearlyFlatEdgeTurnedReflexByTheRotation) {
   EXPECT_EQ(sets[0].count({static_cast<int>(mink::ConvolutionType::EE), 15, 21}), 0u);  // the pair of the flipped edge
 }
 
+TEST(LocalMinkowskiSum, ConvexMapsHandsCoarsePlacementsToTheBoxTrees) {
+  // fuzz/regressions_mesh/convex_maps_misses_fv_octahedron_2e-80: A = B = an octahedron
+  // with one corner at z = -1 and the others within 2^-79 of the z axis. Placed by a
+  // rational rotation, B's corners 0 and 2 (3 * 2^-80 apart, at distance 1) round to the
+  // same point: B's triangle 0 is degenerate as placed, so every vertex of A is compatible
+  // with it (VF), which C(A) looked up along B's own normal of that triangle could not
+  // know. B's map no longer answers for such a placement (ConvexMap::answersPlacement)
+  // and the update is gathered by the box trees.
+  const double a = std::ldexp(1.0, -80), b = std::ldexp(1.0, -79);
+  const std::vector<V> pts = {V(b, a, -1), V(0, a, a), V(-a, b, -1), V(a, 0, a), V(a, a, b), V(a, a, 0)};
+  const std::vector<std::array<int, 3>> tris = {{0, 2, 4}, {0, 5, 2}, {0, 4, 3}, {0, 3, 5},
+                                                {1, 4, 2}, {1, 2, 5}, {1, 3, 4}, {1, 5, 3}};
+  const Mesh X = Mesh::fromMesh(pts, tris);
+  mink::Pose<double> pA, pB;
+  pA.translation = pB.translation = V(-b, -b, -b);
+  pB.rotation << 0.33333333333333348, -0.8717948717948717, -0.35897435897435892, 0.66666666666666663,
+      0.48717948717948723, -0.5641025641025641, 0.66666666666666663, -0.051282051282051266, 0.74358974358974361;
+  std::set<std::tuple<int, int, int>> sets[4];
+  long long fallbacks = -1;
+  for (int m = 0; m < 4; ++m) {
+    mink::LocalMinkowskiSumOptions<double> opt;
+    opt.method = static_cast<mink::LocalSumMethod>(m);
+    mink::LocalMinkowskiSum<double> local(X, X, opt);
+    local.update(pA, pB, V(-a, -a, -a), std::ldexp(1.0, -82));
+    sets[m] = facetSet(local.facets());
+    if (opt.method == mink::LocalSumMethod::ConvexMaps) fallbacks = local.convexMapFallbacks();
+  }
+  EXPECT_EQ(sets[0].count({static_cast<int>(mink::ConvolutionType::VF), 1, 0}), 1u);
+  EXPECT_EQ(sets[2], sets[0]) << "convex maps";
+  EXPECT_EQ(sets[3], sets[0]) << "box trees";
+  EXPECT_EQ(fallbacks, 1);
+  // The same needle at unit size is answered by the maps themselves.
+  const auto& map = *mink::ConvexMap<double>::of(X);
+  EXPECT_FALSE(map.answersPlacement(pB.rotation, V(0, 0, 0)));
+  EXPECT_GT(map.leastHeight(), 0.0);
+  EXPECT_LT(map.leastHeight(), 4 * a);
+  const Mesh A = mesh(mink_test::torus(16, 12)), B = mesh(mink_test::boxShape(V(-0.4, -0.3, -0.5), V(0.4, 0.3, 0.5)));
+  mink::LocalMinkowskiSumOptions<double> opt;
+  opt.method = mink::LocalSumMethod::ConvexMaps;
+  mink::LocalMinkowskiSum<double> local(A, B, opt);
+  mink::Pose<double> qB;
+  qB.rotation = rotation(1.1, V(0.3, -1, 2));
+  qB.translation = V(0.9, 0.3, -0.2);
+  EXPECT_FALSE(local.update(pA, qB, V(1.9, 0.2, 0.1), 0.8).triangles.empty());
+  EXPECT_EQ(local.convexMapFallbacks(), 0);
+}
+
+TEST(LocalMinkowskiSum, ConvexMapOfATetrahedronOneDenormalThick) {
+  // fuzz/regressions_mesh/convex_map_fromPoints_3_points_tetra_vertex_denorm_min: the
+  // tetrahedron's rounded unit normals were three points on a great circle (two of its
+  // four faces' normals equal to rounding), and ConvexMap's hull of them threw
+  // "fromPoints: need at least 4 points". The map now adds the six axis directions.
+  const std::vector<V> pts = {V(-1, 0, -8), V(8, 0, -8), V(0, 4.9406564584124654e-324, -8), V(0, 0, 0)};
+  const std::vector<std::array<int, 3>> tris = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  const Mesh A = Mesh::fromMesh(pts, tris), B = mesh(mink_test::boxShape(V(-4, -4, -4), V(4, 4, 4)));
+  const auto& map = *mink::ConvexMap<double>::of(A);
+  for (const V& d : {V(0, 0, -1), V(0, 1, 0), V(0, -1, 0), V(1, 0, 0), V(-1, 0, 0), V(0.3, -0.2, 0.9)}) {
+    const int cell = map.locate(d);
+    EXPECT_TRUE(map.facesToward(cell, d));
+  }
+  mink::Pose<double> pA, pB;
+  pB.rotation << 0.6, -0.8, 0, 0.8, 0.6, 0, 0, 0, 1;
+  std::set<std::tuple<int, int, int>> sets[4];
+  for (int m = 0; m < 4; ++m) {
+    mink::LocalMinkowskiSumOptions<double> opt;
+    opt.method = static_cast<mink::LocalSumMethod>(m);
+    mink::LocalMinkowskiSum<double> local(A, B, opt);
+    local.update(pA, pB, V(-4, -4, -4), 1.0);
+    sets[m] = facetSet(local.facets());
+  }
+  EXPECT_FALSE(sets[0].empty());
+  for (int m = 1; m < 4; ++m) EXPECT_EQ(sets[m], sets[0]) << "method " << m;
+}
+
 TEST(LocalMinkowskiSum, BadInputIsRejected) {
   const Mesh A = mesh(mink_test::lBlock()), B = mesh(mink_test::boxShape());
   mink::LocalMinkowskiSum<double> local(A, B);

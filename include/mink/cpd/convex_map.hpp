@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -69,6 +70,16 @@ class ConvexMap {
     for (std::size_t i = 0; i < pts.size(); ++i)
       if (kept == 0 || (pts[i] - pts[kept - 1]).norm() > 1e-12) pts[kept++] = pts[i];
     pts.resize(kept);
+    // The six axis directions too: the cones over H's faces must cover the sphere, which
+    // needs the origin inside H. The exact normals of a closed mesh are in no closed
+    // hemisphere, but a sliver's rounded ones can all lie on a great circle (a tetrahedron
+    // one denormal thick: its four unit normals came out as three coplanar points).
+    for (int a = 0; a < 3; ++a)
+      for (double sgn : {1.0, -1.0}) {
+        V3 x = V3::Zero();
+        x[a] = sgn;
+        pts.push_back(x);
+      }
     H_ = std::make_shared<const ConvexPolyhedron<double>>(ConvexPolyhedron<double>::fromPoints(pts));
     const int nf = H_->numFaces();
     std::vector<std::vector<int>> vsets(static_cast<std::size_t>(nf)), esets(static_cast<std::size_t>(nf));
@@ -78,6 +89,7 @@ class ConvexMap {
       if (X.edgeKind(e) == EdgeKind::Convex) registerEdge(X, e, walk, esets);
     pack(vsets, vStart_, vItems_);
     pack(esets, eStart_, eItems_);
+    measure(X);
   }
 
   /// The convex map of X, built on the first request and shared by every user of X.
@@ -131,6 +143,49 @@ class ConvexMap {
     for (int k = 0; k < n; ++k)
       if (H_->vertex(H_->heOrigin(s + k)).dot(d) > 0) return true;
     return false;
+  }
+
+  /// The angle (radians, as a difference of unit vectors) by which every registration
+  /// and arc test is widened: a direction located in the map may be off the one the exact
+  /// predicates see by at most half of it (see answersPlacement).
+  static constexpr double kSlack = 1e-7;
+
+  /// A lower bound on the smallest height of X's triangles (0 if rounding could hide a
+  /// degenerate one), and the largest |coordinate| of X's vertices, both in double.
+  double leastHeight() const { return leastHeight_; }
+  double extent() const { return extent_; }
+
+  /// Does this map (X's own frame) still answer for X placed by fl(R x + t) in T, which is
+  /// what the exact compatibility tests see? X's edge directions and face normals as
+  /// placed differ from R times X's own by the rounding of the placement (at most 8 δ / h
+  /// for a normal and 4 δ / h for an edge, h the least height, δ the per-coordinate error
+  /// of fl(R x + t), bounded by 4 eps (3 |x|∞ + |t|∞)) and by R's departure from
+  /// orthonormality E = R^T R − I (the lookups rotate normals by R, the placed triangles'
+  /// normals turn by R^−T). A located direction and the cone it is tested against may
+  /// then each be off by those angles, which must stay within half the slack. Fails for
+  /// shapes thinner than about 1e-7 / eps of the placement's scale: a needle of width
+  /// 2^-79 placed at distance 1 (its corners merge when rounded) or, in float, almost
+  /// every shape.
+  template <class M, class V>
+  bool answersPlacement(const M& R, const V& t) const {
+    if constexpr (ScalarTraits<T>::isExact) {
+      (void)R, (void)t;
+      return true;
+    } else {
+      const double eps = detail::toDouble(ScalarTraits<T>::epsilon());
+      double tMax = 0.0, eMax = 0.0;
+      for (int i = 0; i < 3; ++i) tMax = std::max(tMax, std::abs(detail::toDouble(t[i])));
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          double e = i == j ? -1.0 : 0.0;
+          for (int k = 0; k < 3; ++k) e += detail::toDouble(R(k, i)) * detail::toDouble(R(k, j));
+          eMax = std::max(eMax, std::abs(e));
+        }
+      if (!(leastHeight_ > 0)) return false;
+      const double delta = 4.0 * eps * (3.0 * extent_ + tMax);
+      const double angle = 16.0 * delta / leastHeight_ + 8.0 * (eMax + 8.0 * eps);
+      return angle <= 0.5 * kSlack;
+    }
   }
 
   /// V̄(cell): vertices of X whose local-maximum cone meets the cell.
@@ -205,7 +260,47 @@ class ConvexMap {
   }
 
  private:
-  static constexpr double kSlack = 1e-7;
+  /// leastHeight_ and extent_: a triangle's height is |(p1 − p0) × (p2 − p0)| over its
+  /// longest edge, less the rounding of the differences and of the cross product (so a
+  /// bound from below, 0 where the rounding could exceed it); X's coordinates are
+  /// first brought near one by a power of two (no under- or overflow).
+  void measure(const TriangleMesh<T>& X) {
+    double m = 0.0;
+    for (int v = 0; v < X.numVertices(); ++v) m = std::max(m, toD(X.vertex(v)).cwiseAbs().maxCoeff());
+    extent_ = m;
+    leastHeight_ = 0.0;
+    if (!(m > 0) || !std::isfinite(m)) return;
+    int ex = 0;
+    std::frexp(m, &ex);
+    const double u = std::ldexp(1.0, -52);
+    double least = 1e300;
+    for (int t = 0; t < X.numTriangles(); ++t) {
+      const auto tri = X.triangle(t);
+      V3 p[3];
+      for (int k = 0; k < 3; ++k) {
+        p[k] = toD(X.vertex(tri[k]));
+        for (int a = 0; a < 3; ++a) p[k][a] = std::ldexp(p[k][a], -ex);
+      }
+      const V3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[2] - p[1];
+      const double l1 = e1.norm(), l2 = e2.norm(), longest = std::max({l1, l2, e3.norm()});
+      // Componentwise: each difference rounded by u of itself, each product by u, the
+      // subtraction by u: |error_i| <= 4u (|e1_j e2_k| + |e1_k e2_j|) (a needle's long,
+      // nearly parallel edges keep a cross product far below u |e1| |e2|). Corners that
+      // T holds beyond double are rounded by u more (they are at most 1 once scaled):
+      // each edge off by 2 sqrt(3) u, the cross product by that times |e1| + |e2|.
+      V3 err;
+      for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        err[i] = 4.0 * u * (std::abs(e1[j] * e2[k]) + std::abs(e1[k] * e2[j]));
+      }
+      double bound = err.norm();
+      if (std::numeric_limits<T>::digits > 53 || ScalarTraits<T>::isExact) bound += 4.0 * u * (l1 + l2);
+      const double h = (e1.cross(e2).norm() - bound) / (longest * (1.0 + 4.0 * u));
+      least = std::min(least, h);
+    }
+    leastHeight_ = least > 0 ? std::ldexp(least, ex) : 0.0;
+  }
+
 
   static IndexRange range(const std::vector<int>& start, const std::vector<int>& items, int i) {
     return IndexRange(items.data() + start[static_cast<std::size_t>(i)], items.data() + start[static_cast<std::size_t>(i) + 1]);
@@ -317,6 +412,7 @@ class ConvexMap {
   static V3 toD(const Vec3<T>& x) { return V3(detail::toDouble(x[0]), detail::toDouble(x[1]), detail::toDouble(x[2])); }
 
   std::shared_ptr<const ConvexPolyhedron<double>> H_;
+  double leastHeight_ = 0.0, extent_ = 0.0;
   std::vector<int> vStart_, vItems_, eStart_, eItems_;
   // Build-time scratch.
   std::vector<V3> poly_, clipped_, dirs_, rays_;

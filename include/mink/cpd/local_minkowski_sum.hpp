@@ -239,6 +239,10 @@ class LocalMinkowskiSum {
   /// The compatible pairs whose facets met the region in the last update, sorted by key.
   const std::vector<ConvolutionPair>& facets() const { return facets_; }
 
+  /// How many updates with LocalSumMethod::ConvexMaps gathered by the box trees because
+  /// B's map did not answer for B as placed (ConvexMap::answersPlacement).
+  long long convexMapFallbacks() const { return mapFallbacks_; }
+
  private:
   /// facets_ := the compatible pairs whose facet meets the region box, sorted.
   void gather() {
@@ -268,11 +272,21 @@ class LocalMinkowskiSum {
   /// Every feature's compatible partners from the other mesh's convex map: FV from A's
   /// faces in C(B), VF from B's faces in C(A), EE from A's convex edges' arcs in C(B),
   /// each located from its cell of the last call. Complete: every compatible pair is in
-  /// the correspondence set of the cell holding its direction (cpd/convex_map.hpp).
+  /// the correspondence set of the cell holding its direction (cpd/convex_map.hpp), as
+  /// long as B's map answers for B as placed (ConvexMap::answersPlacement); where the
+  /// placement's rounding is too coarse for B's thinnest triangle (or T is float), the
+  /// facets are gathered by the box trees instead (inexact T), which find the same set.
   void viaConvexMaps() {
     using V3 = Eigen::Vector3d;
     if (!mapA_) mapA_ = ConvexMap<T>::of(A_);
     if (!mapB_) mapB_ = ConvexMap<T>::of(B_);
+    if constexpr (!ScalarTraits<T>::isExact) {
+      if (!mapB_->answersPlacement(frame_.R(), frame_.t())) {
+        ++mapFallbacks_;
+        viaBoxTrees();
+        return;
+      }
+    }
     hintFA_.resize(static_cast<std::size_t>(A_.numTriangles()), -1);
     hintFB_.resize(static_cast<std::size_t>(B_.numTriangles()), -1);
     hintEA_.resize(static_cast<std::size_t>(A_.numEdges()), -1);
@@ -535,6 +549,7 @@ class LocalMinkowskiSum {
   MinkowskiPatch<T> patch_;
   // ConvexMaps: the two maps, each feature's cell of the last call, a walk's work space.
   std::shared_ptr<const ConvexMap<T>> mapA_, mapB_;  // shared with every user of the mesh
+  long long mapFallbacks_ = 0;  // updates ConvexMaps handed to the box trees
   std::vector<int> hintFA_, hintFB_, hintEA_, edgeMarks_;
   typename ConvexMap<T>::Walk walk_;
 };
