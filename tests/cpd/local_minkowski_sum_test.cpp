@@ -364,6 +364,40 @@ TEST(LocalMinkowskiSum, ConvexMapOfATetrahedronOneDenormalThick) {
   for (int m = 1; m < 4; ++m) EXPECT_EQ(sets[m], sets[0]) << "method " << m;
 }
 
+TEST(LocalMinkowskiSum, BallHoldingAllOfMIsWorkedOnAtTheMeshesScale) {
+  // fuzz/regressions_mesh/slow_tetra_box_ball_radius_1e300_48_pairs: a ball of radius
+  // 1e300 around a point 1e232 away, two meshes of size 8. The work was done in units of
+  // 2^992 (the ball's scale), where the meshes are 2^-989 wide: products of three
+  // coordinates underflowed, corners came out 0 / 0, each update took 22 s of exact
+  // arithmetic on NaN, and the second pose lost a triangle. A ball that holds all of M is
+  // now the ball around M's bounding sphere: the patch must be that of any ball holding M.
+  const std::vector<V> va = {V(0x1.12e0be826d695p-30, -8, -8), V(8, -8, -8), V(0, 0, -8), V(0, -8, 0)};
+  const std::vector<std::array<int, 3>> ta = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const Mesh A = Mesh::fromMesh(va, ta), B = mesh(mink_test::boxShape(V(-4, -4, -4), V(4, 4, 4)));
+  mink::Pose<double> pA[2], pB[2];
+  pA[0].translation = pA[1].translation = V(-8, -8, -8);
+  pA[1].rotation << 1, 0, 0, 0, 0.99631417822928248, -0.085779124845789492, 0, 0.085779124845789492, 0.99631417822928248;
+  pB[0].rotation << 0.33333333333333348, -0.8717948717948717, -0.35897435897435892, 0.66666666666666663,
+      0.48717948717948723, -0.5641025641025641, 0.66666666666666663, -0.051282051282051266, 0.74358974358974361;
+  pB[0].translation = V(-8, 4, 0);
+  pB[1].rotation << 0.33333460489545075, -0.87073903508144501, -0.36152672648730644, 0.66731707068963486,
+      0.48877842763568113, -0.56194623928290155, 0.66601499108158124, -0.053936828451671859, 0.74398578628302858;
+  pB[1].translation = V(-8, 4.5625, -0.03125);
+  const V farCentre(1.7387650154288008e-310, 5.3744319167353186e-299, -0x1.91c5a02020201p+770);
+  for (auto method : {mink::LocalSumMethod::BruteForce, mink::LocalSumMethod::BoxTrees}) {
+    mink::LocalMinkowskiSumOptions<double> opt;
+    opt.method = method;
+    mink::LocalMinkowskiSum<double> huge(A, B, opt), plain(A, B, opt);
+    for (int k = 0; k < 2; ++k) {
+      SCOPED_TRACE("method " + std::to_string(static_cast<int>(method)) + ", pose " + std::to_string(k));
+      const auto big = triangleSet(huge.update(pA[k], pB[k], farCentre, 1e300));
+      const auto ref = triangleSet(plain.update(pA[k], pB[k], V(pA[k].translation - pB[k].translation), 1e3));
+      EXPECT_FALSE(ref.empty());
+      EXPECT_EQ(big, ref);
+    }
+  }
+}
+
 TEST(LocalMinkowskiSum, BadInputIsRejected) {
   const Mesh A = mesh(mink_test::lBlock()), B = mesh(mink_test::boxShape());
   mink::LocalMinkowskiSum<double> local(A, B);

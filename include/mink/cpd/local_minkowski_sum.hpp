@@ -80,6 +80,9 @@ class CpdScale {
     }
   }
 
+  /// The largest |coordinate| of the two meshes (their own frames; 0 for exact T).
+  T meshMax() const { return meshMax_; }
+
   /// The exponent e for a scene whose offsets and ball reach `other` (0: unscaled).
   int exponentFor(const T& other) const {
     if constexpr (ScalarTraits<T>::isExact) {
@@ -154,6 +157,35 @@ class LocalMinkowskiSum {
     return Error();
   }
 
+  /// A ball that holds all of M cuts nothing: it is replaced by one around M's bounding
+  /// sphere (the same patch), so that the units chosen for the work follow the meshes and
+  /// their offset, not the ball. Every point of M is a − (R b + t) with |a|, |b| at most
+  /// sqrt(3) times the largest coordinate of the meshes, stretched by at most 1 + 2e-6 by
+  /// a rotation within its tolerance; the bound is grown by 2^-16 for the rounding, and
+  /// the distance is taken at unit scale (no overflow). A ball of radius 1e300 around a
+  /// point 1e232 away from two meshes of size 8 made the work happen in units of 2^992,
+  /// where the meshes are 2^-989 wide: every product of three coordinates underflowed, the
+  /// trimming's corners were 0 / 0, and each update took 22 s in exact arithmetic on NaN
+  /// (fuzz/README.md).
+  void containedBall(const Vec3<T>& t) {
+    const T ext = scale_.meshMax();
+    if (!(ext > T(0))) return;
+    const T rM = T(2) * std::sqrt(T(3)) * ext * (T(1) + std::ldexp(T(1), -16)) + std::ldexp(t.cwiseAbs().maxCoeff(), -40);
+    Vec3<T> d = region_.centre + t;  // the centre relative to −t, M's middle
+    const T m = d.cwiseAbs().maxCoeff();
+    if (!ScalarTraits<T>::isFinite(m) || !ScalarTraits<T>::isFinite(rM)) return;
+    T dist = T(0);
+    if (m > T(0)) {
+      int e = 0;
+      std::frexp(m, &e);
+      for (int a = 0; a < 3; ++a) d[a] = std::ldexp(d[a], -e);
+      dist = std::ldexp(d.norm() * (T(1) + std::ldexp(T(1), -40)), e);
+    }
+    if (!(dist + rM <= region_.radius * (T(1) - std::ldexp(T(1), -40)))) return;
+    region_.centre = -t;
+    region_.radius = rM;
+  }
+
   /// update() without exceptions: a pointer to the patch (the one patch() returns, valid
   /// until the next update), or the Error update() throws: checkUpdate's, or a ball whose
   /// centre or radius overflows in the units of the meshes' size (2^±1000 apart). Allocates
@@ -170,7 +202,8 @@ class LocalMinkowskiSum {
     region_.centre = RAt * centre;
     region_.radius = radius;
     if constexpr (!ScalarTraits<T>::isExact) {
-      const T reach = std::max({t.cwiseAbs().maxCoeff(), region_.centre.cwiseAbs().maxCoeff(), radius});
+      containedBall(t);
+      const T reach = std::max({t.cwiseAbs().maxCoeff(), region_.centre.cwiseAbs().maxCoeff(), region_.radius});
       const int e = scale_.exponentFor(reach);
       if (e != scaleExp_)
         if (Error err = rescale(e)) return err;
@@ -181,7 +214,7 @@ class LocalMinkowskiSum {
         region_.centre[a] = scaled(region_.centre[a]);
       }
       // A radius below the smallest normal number in those units is taken as that number.
-      region_.radius = std::max(scaled(radius), std::numeric_limits<T>::min());
+      region_.radius = std::max(scaled(region_.radius), std::numeric_limits<T>::min());
       bool finite = ScalarTraits<T>::isFinite(region_.radius);
       for (int a = 0; a < 3; ++a) finite = finite && ScalarTraits<T>::isFinite(region_.centre[a]);
       if (!finite)
