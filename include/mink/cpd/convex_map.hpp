@@ -89,9 +89,7 @@ class ConvexMap {
       if (X.edgeKind(e) == EdgeKind::Convex) registerEdge(X, e, walk, esets);
     pack(vsets, vStart_, vItems_);
     pack(esets, eStart_, eItems_);
-    const auto he = heightAndExtent(X);
-    leastHeight_ = he.first;
-    extent_ = he.second;
+    measure(X);
   }
 
   /// The convex map of X, built on the first request and shared by every user of X.
@@ -190,45 +188,6 @@ class ConvexMap {
     }
   }
 
-  /// (least height, extent) of X (leastHeight(), extent()): a triangle's height is |(p1 − p0) × (p2 − p0)| over its
-  /// longest edge, less the rounding of the differences and of the cross product (so a
-  /// bound from below, 0 where the rounding could exceed it); X's coordinates are
-  /// first brought near one by a power of two (no under- or overflow).
-  static std::pair<double, double> heightAndExtent(const TriangleMesh<T>& X) {
-    double m = 0.0;
-    for (int v = 0; v < X.numVertices(); ++v) m = std::max(m, toD(X.vertex(v)).cwiseAbs().maxCoeff());
-    if (!(m > 0) || !std::isfinite(m)) return {0.0, m};
-    int ex = 0;
-    std::frexp(m, &ex);
-    const double u = std::ldexp(1.0, -52);
-    double least = 1e300;
-    for (int t = 0; t < X.numTriangles(); ++t) {
-      const auto tri = X.triangle(t);
-      V3 p[3];
-      for (int k = 0; k < 3; ++k) {
-        p[k] = toD(X.vertex(tri[k]));
-        for (int a = 0; a < 3; ++a) p[k][a] = std::ldexp(p[k][a], -ex);
-      }
-      const V3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[2] - p[1];
-      const double l1 = e1.norm(), l2 = e2.norm(), longest = std::max({l1, l2, e3.norm()});
-      // Componentwise: each difference rounded by u of itself, each product by u, the
-      // subtraction by u: |error_i| <= 4u (|e1_j e2_k| + |e1_k e2_j|) (a needle's long,
-      // nearly parallel edges keep a cross product far below u |e1| |e2|). Corners that
-      // T holds beyond double are rounded by u more (they are at most 1 once scaled):
-      // each edge off by 2 sqrt(3) u, the cross product by that times |e1| + |e2|.
-      V3 err;
-      for (int i = 0; i < 3; ++i) {
-        const int j = (i + 1) % 3, k = (i + 2) % 3;
-        err[i] = 4.0 * u * (std::abs(e1[j] * e2[k]) + std::abs(e1[k] * e2[j]));
-      }
-      double bound = err.norm();
-      if (std::numeric_limits<T>::digits > 53 || ScalarTraits<T>::isExact) bound += 4.0 * u * (l1 + l2);
-      const double h = (e1.cross(e2).norm() - bound) / (longest * (1.0 + 4.0 * u));
-      least = std::min(least, h);
-    }
-    return {least > 0 ? std::ldexp(least, ex) : 0.0, m};
-  }
-
   /// V̄(cell): vertices of X whose local-maximum cone meets the cell.
   IndexRange vertices(int cell) const { return range(vStart_, vItems_, cell); }
   /// Ē(cell): convex edges of X whose short Gauss arc meets the cell.
@@ -301,6 +260,46 @@ class ConvexMap {
   }
 
  private:
+  /// leastHeight_ and extent_: a triangle's height is |(p1 − p0) × (p2 − p0)| over its
+  /// longest edge, less the rounding of the differences and of the cross product (so a
+  /// bound from below, 0 where the rounding could exceed it); X's coordinates are
+  /// first brought near one by a power of two (no under- or overflow).
+  void measure(const TriangleMesh<T>& X) {
+    double m = 0.0;
+    for (int v = 0; v < X.numVertices(); ++v) m = std::max(m, toD(X.vertex(v)).cwiseAbs().maxCoeff());
+    extent_ = m;
+    leastHeight_ = 0.0;
+    if (!(m > 0) || !std::isfinite(m)) return;
+    int ex = 0;
+    std::frexp(m, &ex);
+    const double u = std::ldexp(1.0, -52);
+    double least = 1e300;
+    for (int t = 0; t < X.numTriangles(); ++t) {
+      const auto tri = X.triangle(t);
+      V3 p[3];
+      for (int k = 0; k < 3; ++k) {
+        p[k] = toD(X.vertex(tri[k]));
+        for (int a = 0; a < 3; ++a) p[k][a] = std::ldexp(p[k][a], -ex);
+      }
+      const V3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[2] - p[1];
+      const double l1 = e1.norm(), l2 = e2.norm(), longest = std::max({l1, l2, e3.norm()});
+      // Componentwise: each difference rounded by u of itself, each product by u, the
+      // subtraction by u: |error_i| <= 4u (|e1_j e2_k| + |e1_k e2_j|) (a needle's long,
+      // nearly parallel edges keep a cross product far below u |e1| |e2|). Corners that
+      // T holds beyond double are rounded by u more (they are at most 1 once scaled):
+      // each edge off by 2 sqrt(3) u, the cross product by that times |e1| + |e2|.
+      V3 err;
+      for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        err[i] = 4.0 * u * (std::abs(e1[j] * e2[k]) + std::abs(e1[k] * e2[j]));
+      }
+      double bound = err.norm();
+      if (std::numeric_limits<T>::digits > 53 || ScalarTraits<T>::isExact) bound += 4.0 * u * (l1 + l2);
+      const double h = (e1.cross(e2).norm() - bound) / (longest * (1.0 + 4.0 * u));
+      least = std::min(least, h);
+    }
+    leastHeight_ = least > 0 ? std::ldexp(least, ex) : 0.0;
+  }
 
 
   static IndexRange range(const std::vector<int>& start, const std::vector<int>& items, int i) {

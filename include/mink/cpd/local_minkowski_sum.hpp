@@ -367,11 +367,8 @@ class LocalMinkowskiSum {
     const double pad = detail::toDouble(region_.radius) + 16.0 * u * reach;
     // The same pairs become the overlap tests' focus: the trimming tests its patches at
     // points inside the ball (MeshOverlap::focusNear).
-    const bool prune = pruneByCones();
-    const long long visited = overlap_.focusNear(region_.centre, detail::toDouble(region_.radius), pad, [&](int fa, int fb) {
-      if (prune && conesApart(fa, fb)) return;
-      trianglePairFeatures(fa, fb);
-    });
+    const long long visited = overlap_.focusNear(region_.centre, detail::toDouble(region_.radius), pad,
+                                                 [&](int fa, int fb) { trianglePairFeatures(fa, fb); });
     patch_.nodePairs = static_cast<int>(std::min<long long>(visited, std::numeric_limits<int>::max()));
   }
 
@@ -428,128 +425,6 @@ class LocalMinkowskiSum {
              boxMeets(eaLo, eaHi, b0.cwiseMin(b1), b0.cwiseMax(b1)));
       }
     }
-  }
-
-  /// A circular cone of directions per triangle t of X (axis, half-angle, its cosine and
-  /// sine; half-angle >= π/2: every direction) that holds every direction at which a
-  /// feature pair t owns can be compatible: t's normal, the normals across its owned
-  /// convex sides (an edge's Gauss arc lies between them), and the extreme rays of the
-  /// local-maximum cones {d : d · (w − v) <= 0} of its owned corners. Widened by kConeSlack
-  /// for the double arithmetic (the directions are exact to ~1e-15 rad for triangles the
-  /// guard of pruneByCones admits).
-  struct Cones {
-    std::vector<Eigen::Vector3d> axis;
-    std::vector<double> angle, cosA, sinA;
-  };
-  static constexpr double kConeSlack = 4e-6;
-
-  static Cones conesOf(const TriangleMesh<T>& X, const std::vector<unsigned char>& own) {
-    using V3 = Eigen::Vector3d;
-    Cones c;
-    const std::size_t n = static_cast<std::size_t>(X.numTriangles());
-    c.axis.assign(n, V3::Zero());
-    c.angle.assign(n, 4.0);
-    c.cosA.assign(n, -1.0);
-    c.sinA.assign(n, 0.0);
-    std::vector<V3> dirs, units;
-    auto toD3 = [](const Vec3<T>& x) { return V3(detail::toDouble(x[0]), detail::toDouble(x[1]), detail::toDouble(x[2])); };
-    for (int t = 0; t < X.numTriangles(); ++t) {
-      units.clear();
-      bool whole = false;
-      units.push_back(ConvexMap<T>::faceUnit(X, t));
-      const unsigned bits = own[static_cast<std::size_t>(t)];
-      for (int i = 0; i < 3 && !whole; ++i) {
-        if (bits & (8u << i)) {
-          const int e = X.triangleEdge(t, i);
-          if (X.edgeKind(e) == EdgeKind::Convex) {
-            const auto tt = X.edgeTriangles(e);
-            units.push_back(ConvexMap<T>::faceUnit(X, tt.first == t ? tt.second : tt.first));
-          }
-        }
-        if (!(bits & (1u << i))) continue;
-        const int v = X.triangle(t)[i];
-        dirs.clear();
-        const V3 pv = toD3(X.vertex(v));
-        for (int w : X.vertexNeighbors(v)) dirs.push_back(ConvexMap<T>::unitOf(toD3(X.vertex(w)) - pv));
-        for (std::size_t a = 0; a < dirs.size() && !whole; ++a)
-          for (std::size_t b = a + 1; b < dirs.size() && !whole; ++b) {
-            V3 r = dirs[a].cross(dirs[b]);
-            const double l = r.norm();
-            if (!(l > 1e-3)) {
-              whole = true;  // nearly parallel edges: their rays are not resolved here
-              break;
-            }
-            r /= l;
-            for (const V3& cand : {r, V3(-r)}) {
-              bool ok = true;
-              for (const V3& e : dirs) ok = ok && cand.dot(e) <= 1e-9;
-              if (ok) units.push_back(cand);
-            }
-          }
-      }
-      if (whole) continue;
-      V3 sum = V3::Zero();
-      for (const V3& u : units) sum += u;
-      const double l = sum.norm();
-      if (!(l > 1e-3)) continue;
-      const V3 ax = sum / l;
-      double least = 1.0;
-      for (const V3& u : units) least = std::min(least, ax.dot(u));
-      if (!(least > 0.05)) continue;
-      const double ang = std::acos(std::min(1.0, least)) + kConeSlack;
-      c.axis[static_cast<std::size_t>(t)] = ax;
-      c.angle[static_cast<std::size_t>(t)] = ang;
-      c.cosA[static_cast<std::size_t>(t)] = std::cos(ang);
-      c.sinA[static_cast<std::size_t>(t)] = std::sin(ang);
-    }
-    return c;
-  }
-
-  /// Whether this update may skip triangle pairs by their cones: the cones are made in
-  /// each mesh's own frame, the compatibility tests see B placed and rounded, so B's turn
-  /// by the placement (ConvexMap::answersPlacement's bound) and both meshes' thinnest
-  /// triangles (their double normals) must stay far inside kConeSlack.
-  bool pruneByCones() {
-    if constexpr (ScalarTraits<T>::isExact || !std::is_same<T, double>::value) {
-      return false;
-    } else {
-      if (!conesMade_) {
-        conesA_ = conesOf(A_, ownedA_);
-        conesB_ = conesOf(B_, ownedB_);
-        const auto ha = ConvexMap<T>::heightAndExtent(A_), hb = ConvexMap<T>::heightAndExtent(B_);
-        const double u = std::ldexp(1.0, -52);
-        meshesResolved_ = ha.first > 0 && hb.first > 0 && 64.0 * u * ha.second / ha.first < 1e-8 &&
-                          64.0 * u * hb.second / hb.first < 1e-8;
-        heightB_ = hb.first;
-        extentB_ = hb.second;
-        conesMade_ = true;
-      }
-      if (!meshesResolved_) return false;
-      const Mat3<T>& R = frame_.R();
-      double tMax = 0.0, eMax = 0.0;
-      for (int i = 0; i < 3; ++i) tMax = std::max(tMax, std::abs(frame_.t()[i]));
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          double e = i == j ? -1.0 : 0.0;
-          for (int k = 0; k < 3; ++k) e += R(k, i) * R(k, j);
-          eMax = std::max(eMax, std::abs(e));
-        }
-      const double eps = std::ldexp(1.0, -52);
-      const double turn = 16.0 * 4.0 * eps * (3.0 * extentB_ + tMax) / heightB_ + 8.0 * (eMax + 8.0 * eps);
-      if (!(turn < 1e-7)) return false;
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) coneR_(i, j) = R(i, j);
-      return true;
-    }
-  }
-
-  /// Are the cones of A's triangle fa and of −(B's triangle fb as placed) apart? Then no
-  /// feature pair of (fa, fb) is compatible.
-  bool conesApart(int fa, int fb) const {
-    const std::size_t a = static_cast<std::size_t>(fa), b = static_cast<std::size_t>(fb);
-    if (conesA_.angle[a] + conesB_.angle[b] >= 3.0) return false;
-    const double c = -conesA_.axis[a].dot(coneR_ * conesB_.axis[b]);
-    return c < conesA_.cosA[a] * conesB_.cosA[b] - conesA_.sinA[a] * conesB_.sinA[b] - 1e-12;
   }
 
   /// Per triangle t of X, the features it owns (see trianglePairFeatures): bit i (i < 3)
@@ -681,7 +556,6 @@ class LocalMinkowskiSum {
     placed_ = false;
     mapA_.reset();
     mapB_.reset();
-    conesMade_ = false;
     hintFA_.clear();
     hintFB_.clear();
     hintEA_.clear();
@@ -705,11 +579,6 @@ class LocalMinkowskiSum {
   std::vector<std::pair<int, int>> stack_;
   // The features each triangle owns (ownership(); the meshes' topology, kept by rescale).
   std::vector<unsigned char> ownedA_, ownedB_;
-  // BoxTrees' triangle cones (made on first use; reset when the meshes are rescaled).
-  Cones conesA_, conesB_;
-  bool conesMade_ = false, meshesResolved_ = false;
-  double heightB_ = 0.0, extentB_ = 0.0;
-  Eigen::Matrix3d coneR_ = Eigen::Matrix3d::Identity();
   MinkowskiPatch<T> patch_;
   // ConvexMaps: the two maps, each feature's cell of the last call, a walk's work space.
   std::shared_ptr<const ConvexMap<T>> mapA_, mapB_;  // shared with every user of the mesh
