@@ -8,6 +8,9 @@
 //   - coherence: one object updated along a sampled motion (each feature walked from its
 //     cell of the last call) gives, frame by frame, exactly the facets and triangles of an
 //     object built afresh for that frame;
+//   - balls far beyond M's size: one that holds M keeps what a ball around M keeps; spheres
+//     of radius 5 · 2^27 … 5 · 2^700 through one point of M with one tangent plane there
+//     keep the same triangles (the test of a piece against the ball is exact);
 //   - bad input: a non-finite centre, a radius that is not positive and finite, a pose
 //     that is not rigid;
 //   - float and CGAL::Gmpq instantiate and agree with double.
@@ -394,6 +397,44 @@ TEST(LocalMinkowskiSum, BallHoldingAllOfMIsWorkedOnAtTheMeshesScale) {
       const auto ref = triangleSet(plain.update(pA[k], pB[k], V(pA[k].translation - pB[k].translation), 1e3));
       EXPECT_FALSE(ref.empty());
       EXPECT_EQ(big, ref);
+    }
+  }
+}
+
+TEST(LocalMinkowskiSum, BallCrossingMKeepsTheSamePiecesAtAnyRadius) {
+  // The meshes above, B lowered so that M straddles the origin's plane, and balls whose
+  // sphere passes exactly through (0, −12, 0) with normal (3, 0, 4) / 5 there: centre
+  // (−3k, −12, −4k), radius 5k (exact numbers), far from the box's faces, so that the
+  // sphere alone trims M; for k >= 2^27 it is within 1e-6 of its tangent plane over M.
+  // Every such ball must keep the same triangles. The test of a piece against the ball
+  // was in double (every piece "met" a sphere of radius 5 · 2^66: all 44 triangles kept
+  // instead of 34), and the work moved to the ball's units (k = 2^332: a triangle too
+  // many, products of coordinates underflowing; 8 s per update at 2^700).
+  const std::vector<V> va = {V(0x1.12e0be826d695p-30, -8, -8), V(8, -8, -8), V(0, 0, -8), V(0, -8, 0)};
+  const std::vector<std::array<int, 3>> ta = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const Mesh A = Mesh::fromMesh(va, ta), B = mesh(mink_test::boxShape(V(-4, -4, -4), V(4, 4, 4)));
+  mink::Pose<double> pA, pB;
+  pA.translation = V(-8, -8, -8);
+  pB.rotation << 0.33333333333333348, -0.8717948717948717, -0.35897435897435892, 0.66666666666666663,
+      0.48717948717948723, -0.5641025641025641, 0.66666666666666663, -0.051282051282051266, 0.74358974358974361;
+  pB.translation = V(-8, 4, -12);
+  auto ball = [](int e) {
+    const double k = std::ldexp(1.0, e);
+    return std::make_pair(V(-3 * k, -12, -4 * k), 5 * k);
+  };
+  for (auto method : {mink::LocalSumMethod::BruteForce, mink::LocalSumMethod::BoxTrees}) {
+    mink::LocalMinkowskiSumOptions<double> opt;
+    opt.method = method;
+    mink::LocalMinkowskiSum<double> local(A, B, opt);
+    const auto all = triangleSet(local.update(pA, pB, V(pA.translation - pB.translation), 1e3));
+    const auto near = ball(27);
+    const auto ref = triangleSet(local.update(pA, pB, near.first, near.second));
+    EXPECT_GT(ref.size(), 10u);
+    EXPECT_LT(ref.size(), all.size());  // the sphere trims M
+    for (int e : {66, 133, 332, 700}) {
+      SCOPED_TRACE("method " + std::to_string(static_cast<int>(method)) + ", k = 2^" + std::to_string(e));
+      const auto b = ball(e);
+      EXPECT_EQ(triangleSet(local.update(pA, pB, b.first, b.second)), ref);
     }
   }
 }

@@ -58,7 +58,7 @@ namespace detail {
 
 /// The unit LocalMinkowskiSum works in. The trimming's constructions and filters multiply
 /// up to nine coordinates of M, which over- or underflow far from unit scale. When the
-/// scene (the meshes' coordinates, B's offset from A, the ball) is beyond 2^±W, W =
+/// scene (the meshes' coordinates and B's offset from A) is beyond 2^±W, W =
 /// max_exponent / 16 (64 for double), the work is done on copies of the meshes scaled by
 /// 2^-e, e a multiple of W/2 near the scene's exponent: exact (a power of two), never so
 /// far down that a mesh coordinate would lose a bit, and scaled back in the answer.
@@ -203,8 +203,10 @@ class LocalMinkowskiSum {
     region_.radius = radius;
     if constexpr (!ScalarTraits<T>::isExact) {
       containedBall(t);
-      const T reach = std::max({t.cwiseAbs().maxCoeff(), region_.centre.cwiseAbs().maxCoeff(), region_.radius});
-      const int e = scale_.exponentFor(reach);
+      // The units follow the meshes and B's offset, not the ball: the trimming multiplies
+      // mesh coordinates (up to nine), the ball enters only through its box and the exact
+      // test of a piece against it, both at any scale.
+      const int e = scale_.exponentFor(t.cwiseAbs().maxCoeff());
       if (e != scaleExp_)
         if (Error err = rescale(e)) return err;
     }

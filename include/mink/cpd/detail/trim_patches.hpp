@@ -99,45 +99,131 @@ bool Trimmer<T>::separated(int F, int G, std::uint64_t label, int a, int b) cons
 
 template <class T>
 bool Trimmer<T>::polygonMeetsBall(const int* v, int count) const {
-  const Vec3<T>& c = region_.centre;
-  const T r2 = region_.radius * region_.radius;
-  // Nearest point of the convex polygon: inside it (projection), else on a side.
-  const std::size_t n = static_cast<std::size_t>(count);
-  const Vec3<T>& x0 = coords_[static_cast<std::size_t>(v[0])];
-  Vec3<T> nrm = (coords_[static_cast<std::size_t>(v[1])] - x0).cross(coords_[static_cast<std::size_t>(v[n - 1])] - x0);
-  if constexpr (!ScalarTraits<T>::isExact) {
-    // |nrm| ~ L² and the tests below multiply it by lengths again: scale it by a power
-    // of two to a largest coordinate in [1/2, 1) so that nothing over- or underflows for
-    // scenes of any size fromMesh accepts (only its direction matters).
-    const T m = nrm.cwiseAbs().maxCoeff();
-    if (m > T(0) && std::isfinite(m)) {
-      int e = 0;
-      std::frexp(m, &e);
-      for (int k = 0; k < 3; ++k) nrm[k] = std::ldexp(nrm[k], -e);
+  if constexpr (ScalarTraits<T>::isExact) {
+    return ballTest<T>(v, count) > 0;
+  } else {
+    // In double first (T = double or float: no rounding on the way in), a certain answer
+    // where the decision has room — a corner well inside the ball, the polygon's box well
+    // outside it (relative errors below 8 ulps; an overflowed square is still the larger;
+    // no subnormal radius) — then intervals, then expansions.
+    const Vec3<T>& c = region_.centre;
+    const double r = toDouble(region_.radius), u = std::ldexp(1.0, -50);
+    if (std::numeric_limits<T>::digits <= 53 && r > 1e-140) {
+      Eigen::Vector3d lo = toD(coords_[static_cast<std::size_t>(v[0])]), hi = lo;
+      for (int i = 0; i < count; ++i) {
+        const Eigen::Vector3d x = toD(coords_[static_cast<std::size_t>(v[i])]);
+        if ((x - toD(c)).squaredNorm() * (1 + 16 * u) < r * r * (1 - 16 * u)) return true;
+        lo = lo.cwiseMin(x);
+        hi = hi.cwiseMax(x);
+      }
+      double gap2 = 0;
+      for (int a = 0; a < 3; ++a) {
+        const double ca = toDouble(c[a]), g = std::max({lo[a] - ca, ca - hi[a], 0.0});
+        gap2 += g * g;
+      }
+      if (gap2 * (1 - 16 * u) > r * r * (1 + 16 * u)) return false;
     }
+    const int filtered = ballTest<IV>(v, count);
+    if (filtered != 0) return filtered > 0;
+    return ballTest<EX>(v, count) > 0;
   }
-  const T nn = nrm.squaredNorm();
-  bool inside = nn > T(0);
-  for (std::size_t i = 0; i < n && inside; ++i) {
-    const Vec3<T>& a = coords_[static_cast<std::size_t>(v[i])];
-    const Vec3<T>& b = coords_[static_cast<std::size_t>(v[(i + 1) % n])];
-    if ((b - a).cross(c - a).dot(nrm) < T(0)) inside = false;
+}
+
+template <class T>
+template <class N>
+int Trimmer<T>::ballTest(const int* v, int count) const {
+  // The nearest point of a convex polygon to the centre c is a corner, a point inside a
+  // side (its projection falls strictly between the side's ends) or a point inside the
+  // polygon (c projects into it): the polygon meets the ball iff one of those within r.
+  // Every decision is the sign of a polynomial in the given numbers, each homogeneous in
+  // (c − corner, r), in a side's direction d and in the normal n, which are therefore
+  // scaled apart by powers of two (exact) so that no product over- or underflows for a
+  // ball of any size beside pieces of any size (a piece can be 2^-300 of the ball).
+  constexpr bool exact = !std::is_same<N, IV>::value;
+  auto sgn = [](const N& x) {
+    if constexpr (std::is_same<N, IV>::value)
+      return x.certainSign();
+    else if constexpr (std::is_same<N, T>::value)
+      return detail::sign(x);
+    else
+      return x.sign();
+  };
+  auto scale = [](double m) {  // 2^-e, m's exponent e (within ±960: a finite factor)
+    int e = 0;
+    if (m > 0 && std::isfinite(m)) std::frexp(m, &e);
+    return N(static_cast<FloatOf>(std::ldexp(1.0, -std::max(-960, std::min(960, e)))));
+  };
+  auto x = [&](int i) -> const Vec3<T>& { return coords_[static_cast<std::size_t>(v[(i % count + count) % count])]; };
+  const Vec3<T>& c = region_.centre;
+  double big = toDouble(region_.radius);
+  for (int i = 0; i < count; ++i) big = std::max(big, toD(x(i)).cwiseAbs().maxCoeff() + toD(c).cwiseAbs().maxCoeff());
+  const N sw = exact && std::is_same<N, T>::value ? N(1) : scale(big);
+  auto w = [&](int i, N out[3]) {
+    for (int a = 0; a < 3; ++a) out[a] = (N(c[a]) - N(x(i)[a])) * sw;
+  };
+  auto diff = [&](int i, int j, N out[3]) {  // x(j) − x(i), scaled near one
+    const double m = toD(Vec3<T>(x(j) - x(i))).cwiseAbs().maxCoeff();
+    const N s = std::is_same<N, T>::value ? N(1) : scale(m);
+    for (int a = 0; a < 3; ++a) out[a] = (N(x(j)[a]) - N(x(i)[a])) * s;
+  };
+  const N rr = N(region_.radius) * sw, r2 = rr * rr;
+  bool unsure = false;
+  // A "yes" is certain where its sign is (> 0, or = 0 with expansions); an interval that
+  // cannot tell leaves the answer unsure unless another test says yes.
+  auto yes = [&](int s) {
+    if (s > 0 || (exact && s == 0)) return true;
+    if (!exact && s == 0) unsure = true;
+    return false;
+  };
+  for (int i = 0; i < count; ++i) {
+    N wi[3];
+    w(i, wi);
+    if (yes(sgn(r2 - dot(wi, wi)))) return 1;
+  }
+  for (int i = 0; i < count; ++i) {
+    N wa[3], wb[3], d[3];
+    w(i, wa);
+    w(i + 1, wb);
+    diff(i, i + 1, d);
+    const N wd = dot(wa, d);
+    const int s1 = sgn(wd), s2 = -sgn(dot(wb, d));  // (c − a)·d > 0 and (c − b)·d < 0
+    if (s1 < 0 || s2 < 0 || (exact && (s1 == 0 || s2 == 0))) continue;
+    const N dd = dot(d, d);
+    const bool within = yes(sgn(r2 * dd - (dot(wa, wa) * dd - wd * wd)));
+    if (within && s1 > 0 && s2 > 0) return 1;
+    if (within) unsure = true;  // the projection may fall on an end: intervals cannot tell
+  }
+  // The normal: the fan's cross products summed (no corner need be strictly convex).
+  Eigen::Vector3d approx = Eigen::Vector3d::Zero();
+  for (int i = 1; i + 1 < count; ++i) approx += toD(Vec3<T>(x(i) - x(0))).cross(toD(Vec3<T>(x(i + 1) - x(0))));
+  const double nm = approx.cwiseAbs().maxCoeff();
+  const N sn = std::is_same<N, T>::value ? N(1) : scale(nm > 0 ? nm : 1.0);
+  N n[3] = {N(0), N(0), N(0)};
+  for (int i = 1; i + 1 < count; ++i) {
+    N p[3], q[3], t[3];
+    for (int a = 0; a < 3; ++a) p[a] = N(x(i)[a]) - N(x(0)[a]), q[a] = N(x(i + 1)[a]) - N(x(0)[a]);
+    cross(p, q, t);
+    for (int a = 0; a < 3; ++a) n[a] += t[a] * sn;
+  }
+  const int sn2 = sgn(dot(n, n));
+  if (sn2 == 0) return exact ? -1 : 0;  // no area (expansions): the sides decided it
+  bool inside = true, maybe = false;
+  for (int i = 0; i < count && inside; ++i) {
+    N wa[3], d[3], t[3];
+    w(i, wa);
+    diff(i, i + 1, d);
+    cross(d, wa, t);
+    const int s = sgn(dot(t, n));
+    if (s < 0) inside = false;
+    if (!exact && s == 0) maybe = true;
   }
   if (inside) {
-    const T h = nrm.dot(c - x0);
-    return h * h <= r2 * nn;
+    N w0[3];
+    w(0, w0);
+    const N h = dot(n, w0);
+    if (yes(sgn(r2 * dot(n, n) - h * h))) return maybe ? 0 : 1;
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3<T>& a = coords_[static_cast<std::size_t>(v[i])];
-    const Vec3<T>& b = coords_[static_cast<std::size_t>(v[(i + 1) % n])];
-    const Vec3<T> d = b - a;
-    const T dd = d.squaredNorm();
-    T t = dd > T(0) ? T((c - a).dot(d) / dd) : T(0);
-    if (t < T(0)) t = T(0);
-    if (t > T(1)) t = T(1);
-    if ((a + t * d - c).squaredNorm() <= r2) return true;
-  }
-  return false;
+  return unsure ? 0 : -1;
 }
 
 template <class T>

@@ -502,10 +502,12 @@ class Trimmer {
     return c / T(static_cast<int>(p.v.size()));
   }
 
-  /// Does the piece meet the ball? (Squared distances, no root: exact for exact T.)
   bool meetsBall(const Poly& p) const { return polygonMeetsBall(p.v.data(), static_cast<int>(p.v.size())); }
-  /// Does the convex polygon of corners v[0 .. n) meet the ball?
+  /// Does the convex polygon of corners v[0 .. n) meet the closed ball? Exact on the corners,
+  /// centre and radius given (trim_patches.hpp); ballTest: +1 yes, −1 no, 0 (intervals) unsure.
   bool polygonMeetsBall(const int* v, int count) const;
+  template <class N>
+  int ballTest(const int* v, int count) const;
 
   /// Is the piece inside a coplanar, equally oriented soup triangle of lower index (which
   /// then emits this part of ∂M)? The piece lies inside it or outside it (step 2).
