@@ -439,6 +439,25 @@ TEST(LocalMinkowskiSum, BallCrossingMKeepsTheSamePiecesAtAnyRadius) {
   }
 }
 
+TEST(LocalMinkowskiSum, FarBallBesideTinyMeshesIsAnsweredNotRejected) {
+  // fuzz/regressions_mesh/tiny_boxes_ball_2e265_away_units_overflow: boxes of half-size
+  // 2^-512 and a ball 1.6e265 away. With the units taken from the meshes alone (2^-480),
+  // the ball's centre overflowed in them and update() refused valid arguments; the units
+  // now rise as far as the ball needs. The ball meets nothing: an empty patch.
+  const Mesh A = mesh(mink_test::boxShape(V::Constant(-std::ldexp(1.0, -512)), V::Constant(std::ldexp(1.0, -512))));
+  mink::Pose<double> pA, pB;
+  pB.rotation = V(-1, 1, -1).asDiagonal();
+  pB.translation = V(-std::ldexp(1.0, -511), std::ldexp(1.0, -512), std::ldexp(1.0, -511));
+  mink::LocalMinkowskiSum<double> local(A, A);
+  const auto r = local.tryUpdate(pA, pB, V(-0x1.002f903ffffffp+881, 0, 0), std::ldexp(1.0, -514));
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_TRUE(r.value()->triangles.empty());
+  // And the same boxes with a ball around them: the units still follow the meshes.
+  const auto near = local.tryUpdate(pA, pB, V(pA.translation - pB.translation), std::ldexp(1.0, -509));
+  ASSERT_TRUE(near.ok()) << near.error().message();
+  EXPECT_FALSE(near.value()->triangles.empty());
+}
+
 TEST(LocalMinkowskiSum, BadInputIsRejected) {
   const Mesh A = mesh(mink_test::lBlock()), B = mesh(mink_test::boxShape());
   mink::LocalMinkowskiSum<double> local(A, B);
