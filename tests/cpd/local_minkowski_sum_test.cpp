@@ -458,6 +458,40 @@ TEST(LocalMinkowskiSum, FarBallBesideTinyMeshesIsAnsweredNotRejected) {
   EXPECT_FALSE(near.value()->triangles.empty());
 }
 
+TEST(LocalMinkowskiSum, SubnormalFacetsBesideAUnitMeshGetAFiniteOffset) {
+  // fuzz/regressions_mesh/subnormal_needle_box_tiny_cube_nan_offset: A a needle 1 long
+  // and 1.1e-308 wide, B a cube of side 1.1e-308 (subnormal coordinates beside 1: no
+  // power of two brings both near one). The cross products of B's sides underflow to
+  // zero, and the trimming offset a piece along their normalised value, NaN: every exact
+  // orientation test on NaN took its slowest path (6 s per update) and the answer
+  // depended on comparisons with NaN. The offset's direction now comes from the sides
+  // scaled apart. (With assertions on, MeshOverlap::overlaps refuses a NaN offset.)
+  const double h = 0x0.4p-1022, w = 0x0.8p-1022;
+  const std::vector<std::array<int, 3>> tri = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                                               {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  const std::vector<V> a = {V(-1, 0, 0),  V(-h, 0, 0), V(-1, w, 0),      V(-h, w, 0),
+                            V(-3 * h, 0, w), V(-h, 0, w), V(-3 * h, w, w), V(-h, w, w)};
+  std::vector<V> b;
+  for (int i = 0; i < 8; ++i) b.push_back(V(i & 1 ? h : -h, i & 2 ? h : -h, i & 4 ? h : -h));
+  const Mesh A = Mesh::fromMesh(a, tri), B = Mesh::fromMesh(b, tri);
+  mink::Pose<double> pA, pB;
+  pA.translation = V(h, w, -h);
+  // A half-turn about (1, -1, -4), to a few ulps (the fuzz input's numbers).
+  const double r8 = 0.88888888888888928, r1 = 0.11111111111111113, r4 = 0.44444444444444453;
+  pB.rotation << -r8, -r1, -r4, -r1, -r8, r4, -r4, r4, 0.77777777777777768;
+  pB.translation = V(0x0.008p-1022, 0x0.004p-1022, 0);
+  for (const auto method : {mink::LocalSumMethod::BruteForce, mink::LocalSumMethod::SphereTree,
+                            mink::LocalSumMethod::ConvexMaps, mink::LocalSumMethod::BoxTrees}) {
+    mink::LocalMinkowskiSumOptions<double> opt;
+    opt.method = method;
+    mink::LocalMinkowskiSum<double> local(A, B, opt);
+    const auto r = local.tryUpdate(pA, pB, V(-0x0.008p-1022, 0x0.3fcp-1022, -w), 0x0.1p-1022);
+    ASSERT_TRUE(r.ok()) << r.error().message();
+    EXPECT_EQ(r.value()->triangles.size(), 3u);
+    for (const V& v : r.value()->vertices) EXPECT_TRUE(v.allFinite());
+  }
+}
+
 TEST(LocalMinkowskiSum, BadInputIsRejected) {
   const Mesh A = mesh(mink_test::lBlock()), B = mesh(mink_test::boxShape());
   mink::LocalMinkowskiSum<double> local(A, B);

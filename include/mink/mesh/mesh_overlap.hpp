@@ -31,6 +31,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -193,6 +194,8 @@ class MeshOverlap {
 
   /// Does A meet B + y (y in A's frame)? Fills result().
   bool overlaps(const Vec3<T>& y = Vec3<T>::Zero()) {
+    assert(ScalarTraits<T>::isFinite(y[0]) && ScalarTraits<T>::isFinite(y[1]) && ScalarTraits<T>::isFinite(y[2]) &&
+           "MeshOverlap::overlaps: y must be finite");
     result_ = OverlapResult();
     y_ = y;
     slackB_ = slackFor(y);

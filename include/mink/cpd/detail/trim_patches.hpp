@@ -252,8 +252,25 @@ bool Trimmer<T>::onBoundary(int piece, MeshOverlap<T>& overlap) const {
   for (int k = 0; k < fp.count; ++k) x += coords_[static_cast<std::size_t>(finalV_[static_cast<std::size_t>(fp.first + k)])];
   x /= T(fp.count);
   const Eigen::Vector3d xd = toD(x);
-  Eigen::Vector3d nd = toD(f.n);
-  nd /= nd.norm();
+  // F's unit normal from its sides, each scaled by a power of two to a size near one:
+  // f.n, their cross product in T, underflows for a facet of a mesh 2^-500 beside one
+  // of size 1 (a NaN offset then sent every exact test to its slowest path). F's
+  // dominant axis where even that rounds to zero.
+  const auto scaledSide = [&](int c) {
+    Eigen::Vector3d e = toD(Vec3<T>(mCoord_[f.m[c]] - mCoord_[f.m[0]]));
+    int k = 0;
+    const double m = e.cwiseAbs().maxCoeff();
+    if (m > 0 && std::isfinite(m)) std::frexp(m, &k);
+    for (int a = 0; a < 3; ++a) e[a] = std::ldexp(e[a], -k);
+    return e;
+  };
+  Eigen::Vector3d nd = scaledSide(1).cross(scaledSide(2));
+  if (const double len = nd.norm(); len > 0 && std::isfinite(len)) {
+    nd /= len;
+  } else {
+    nd.setZero();
+    nd[f.axis] = f.axisSign;
+  }
   double bound = std::numeric_limits<double>::infinity();
   if (region_.bounded)
     for (int a = 0; a < 3; ++a) {
