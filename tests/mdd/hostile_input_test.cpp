@@ -97,6 +97,36 @@ TEST(MddHostile, BadPosesNameTheArgumentInMddAndIntersects) {
   }
 }
 
+TEST(MddHostile, APoseKeptInTheCacheLetsNoOtherPoseThroughUnchecked) {
+  // The cache keeps poseP once checked (with its inverse rotation), so that a shape that
+  // stays put is not checked again: only the same pose, bit for bit, may skip the check.
+  const auto B = box(1);
+  Pose<double> q;
+  q.translation = V(3, 0.25, 0);
+  mink::MddCache<double> cache;
+  const auto fresh = [&](const Pose<double>& p) {
+    mink::MddCache<double> c;
+    return mink::mdd(B, p, B, q, V(-1, 0, 0), c);
+  };
+  for (const BadPose& b : badPoses()) {
+    (void)mink::mdd(B, Pose<double>(), B, q, V(-1, 0, 0), cache);
+    expectRejected([&] { (void)mink::mdd(B, b.pose, B, q, V(-1, 0, 0), cache); }, std::string("poseP.") + b.problem,
+                   std::string("mdd after a good poseP: ") + b.name);
+    expectRejected([&] { (void)mink::intersects(B, b.pose, B, q, cache); }, std::string("poseP.") + b.problem,
+                   std::string("intersects after a good poseP: ") + b.name);
+  }
+  // A good pose after another, and the kept one again: each answered as by a fresh cache.
+  Pose<double> turned;
+  turned.rotation = Eigen::AngleAxisd(0.3, V(0, 0, 1)).toRotationMatrix();
+  turned.translation = V(-0.5, 0, 0);
+  for (const Pose<double>& p : {turned, Pose<double>(), turned}) {
+    const auto r = mink::mdd(B, p, B, q, V(-1, 0, 0), cache), f = fresh(p);
+    EXPECT_EQ(r.status, f.status);
+    EXPECT_EQ(r.translation, f.translation);
+    EXPECT_EQ(r.normal, f.normal);
+  }
+}
+
 TEST(MddHostile, BadDirectionsAreNamed) {
   const auto B = box(1);
   Pose<double> q;

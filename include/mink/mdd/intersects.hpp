@@ -15,13 +15,19 @@ namespace mink {
 template <class T>
 [[nodiscard]] Error checkIntersectsInput(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
                                          const ConvexPolyhedron<T>& Q, const Pose<T>& poseQ,
-                                         const MddOptions<T>& options = {}) {
-  if (!(options.touchTolerance == options.touchTolerance))
-    return Error("intersects: options.touchTolerance is NaN (use a negative value for automatic)");
-  return detail::checkPlacedPair(P, poseP, Q, poseQ);
-}
+                                         const MddOptions<T>& options = {});
 
 namespace detail {
+
+/// checkIntersectsInput, poseP not checked again where it matches `checkedP`.
+template <class T>
+[[nodiscard]] Error checkIntersectsInputKept(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
+                                             const ConvexPolyhedron<T>& Q, const Pose<T>& poseQ,
+                                             const MddOptions<T>& options, const CheckedPose<T>* checkedP) {
+  if (!(options.touchTolerance == options.touchTolerance))
+    return Error("intersects: options.touchTolerance is NaN (use a negative value for automatic)");
+  return checkPlacedPair(P, poseP, Q, poseQ, checkedP);
+}
 
 /// intersects() on input that passed checkIntersectsInput.
 template <class T>
@@ -92,9 +98,15 @@ bool intersectsChecked(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const
 /// and a NaN touchTolerance (checkIntersectsInput; without exceptions, prints its message
 /// and aborts: use tryIntersects there).
 template <class T>
+Error checkIntersectsInput(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                           const Pose<T>& poseQ, const MddOptions<T>& options) {
+  return detail::checkIntersectsInputKept<T>(P, poseP, Q, poseQ, options, nullptr);
+}
+
+template <class T>
 bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                 const Pose<T>& poseQ, MddCache<T>& cache, const MddOptions<T>& options = {}) {
-  detail::raiseIf(checkIntersectsInput(P, poseP, Q, poseQ, options));
+  detail::raiseIf(detail::checkIntersectsInputKept(P, poseP, Q, poseQ, options, &cache.checkedPoseP));
   return detail::intersectsChecked(P, poseP, Q, poseQ, cache, options);
 }
 
@@ -102,7 +114,7 @@ bool intersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const Convex
 template <class T>
 Result<bool> tryIntersects(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                            const Pose<T>& poseQ, MddCache<T>& cache, const MddOptions<T>& options = {}) {
-  if (Error e = checkIntersectsInput(P, poseP, Q, poseQ, options)) return e;
+  if (Error e = detail::checkIntersectsInputKept(P, poseP, Q, poseQ, options, &cache.checkedPoseP)) return e;
   return detail::intersectsChecked(P, poseP, Q, poseQ, cache, options);
 }
 

@@ -32,6 +32,22 @@
 
 namespace mink {
 
+namespace detail {
+/// checkMddInput, poseP not checked again where it matches `checkedP` (a cache's pose
+/// that passed before).
+template <class T>
+[[nodiscard]] Error checkMddInputKept(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
+                                      const Pose<T>& poseQ, const Vec3<T>& s, const MddOptions<T>& options,
+                                      const CheckedPose<T>* checkedP) {
+  for (int i = 0; i < 3; ++i)
+    if (!ScalarTraits<T>::isFinite(s[i])) return Error("mdd: direction s is not finite");
+  if (s == Vec3<T>::Zero()) return Error("mdd: direction s is zero");
+  if (!(options.touchTolerance == options.touchTolerance))
+    return Error("mdd: options.touchTolerance is NaN (use a negative value for automatic)");
+  return checkPlacedPair(P, poseP, Q, poseQ, checkedP);
+}
+}  // namespace detail
+
 /// The Error for input mdd(), mddExact() and firstContact() do not take, or none: a zero
 /// or non-finite s, a NaN options.touchTolerance, a pose that is not a rigid placement, a
 /// shape too thin for the Gauss-map tests in its scalar type. mdd() throws it as
@@ -40,12 +56,7 @@ namespace mink {
 template <class T>
 [[nodiscard]] Error checkMddInput(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                                   const Pose<T>& poseQ, const Vec3<T>& s, const MddOptions<T>& options = {}) {
-  for (int i = 0; i < 3; ++i)
-    if (!ScalarTraits<T>::isFinite(s[i])) return Error("mdd: direction s is not finite");
-  if (s == Vec3<T>::Zero()) return Error("mdd: direction s is zero");
-  if (!(options.touchTolerance == options.touchTolerance))
-    return Error("mdd: options.touchTolerance is NaN (use a negative value for automatic)");
-  return detail::checkPlacedPair(P, poseP, Q, poseQ);
+  return detail::checkMddInputKept<T>(P, poseP, Q, poseQ, s, options, nullptr);
 }
 
 namespace detail {
@@ -74,7 +85,7 @@ template <class T>
 MddResult<T> mddQuery(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
                       const Pose<T>& poseQ, const Vec3<T>& s, MddCache<T>& cache, const MddOptions<T>& options,
                       bool bothExits) {
-  if (Error e = checkMddInput(P, poseP, Q, poseQ, s, options)) return invalidMddInput<T>(e);
+  if (Error e = checkMddInputKept(P, poseP, Q, poseQ, s, options, &cache.checkedPoseP)) return invalidMddInput<T>(e);
   if constexpr (ScalarTraits<T>::isExact) {
     return MddDriver<T>(P, poseP, Q, poseQ, s, cache, options, bothExits).run();
   } else {

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "mink/core/scalar_traits.hpp"
@@ -338,6 +340,42 @@ class EpochMarks {
   std::size_t ids_ = 0, count_ = 0;
   bool dense_ = false;
 };
+/// A pose that passed the query's checks and its inverse rotation (MddCache::checkedPoseP):
+/// a shape that stays where it is (a static obstacle) is checked and inverted once, not on
+/// every query. A pose matches only bit for bit (float and double) or exactly (exact T);
+/// other scalar types are never kept.
+template <class T>
+struct CheckedPose {
+  Pose<T> pose;
+  Mat3<T> inverseRotation;
+  bool valid = false;
+  bool matches(const Pose<T>& p) const {
+    if (!valid) return false;
+    if constexpr (std::is_same<T, float>::value || std::is_same<T, double>::value) {
+      using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
+      auto same = [](const T* a, const T* b, int n) {
+        Bits diff = 0;
+        for (int i = 0; i < n; ++i) {
+          Bits x, y;
+          std::memcpy(&x, a + i, sizeof(T));
+          std::memcpy(&y, b + i, sizeof(T));
+          diff |= x ^ y;
+        }
+        return diff == 0;
+      };
+      return same(p.rotation.data(), pose.rotation.data(), 9) && same(p.translation.data(), pose.translation.data(), 3);
+    } else if constexpr (ScalarTraits<T>::isExact) {
+      return p.rotation == pose.rotation && p.translation == pose.translation;
+    } else {
+      return false;
+    }
+  }
+  void keep(const Pose<T>& p, const Mat3<T>& inverse) {
+    pose = p;
+    inverseRotation = inverse;
+    valid = true;
+  }
+};
 }  // namespace detail
 
 /// Per-pair state a caller may keep between queries (frame coherence, section VI-E):
@@ -364,6 +402,7 @@ struct MddCache {
   std::vector<int> setP, setQ;
   std::vector<std::pair<std::pair<T, T>, int>> points2, hull2;
   detail::DifferencePolygon<T> facet;
+  detail::CheckedPose<T> checkedPoseP;  // poseP of an earlier query, checked, and its inverse
 };
 
 namespace detail {

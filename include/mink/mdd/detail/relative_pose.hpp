@@ -68,11 +68,13 @@ template <class T>
 }
 
 /// The Error for placed shapes an MDD query cannot take (checkPose on both poses; a shape
-/// too thin for the Gauss-map tests in its scalar type), or none.
+/// too thin for the Gauss-map tests in its scalar type), or none. poseP is not checked
+/// again where it matches `checked` (a cache's pose that passed these checks before).
 template <class T>
 [[nodiscard]] Error checkPlacedPair(const ConvexPolyhedron<T>& P, const Pose<T>& poseP, const ConvexPolyhedron<T>& Q,
-                                    const Pose<T>& poseQ) {
-  if (Error e = checkPose(poseP, "poseP")) return e;
+                                    const Pose<T>& poseQ, const CheckedPose<T>* checked = nullptr) {
+  if (!(checked && checked->matches(poseP)))
+    if (Error e = checkPose(poseP, "poseP")) return e;
   if (Error e = checkPose(poseQ, "poseQ")) return e;
   for (const auto* X : {&P, &Q})
     if (!X->edgesResolved())
@@ -104,8 +106,13 @@ RelativePose<T> relativePose(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
   RelativePose<T> rel;
   // P's inverse rotation, not its transpose: the two differ when the matrix is a rotation
   // only up to rounding, and the inverse keeps the answer the exact one for the shapes
-  // as placed by the matrices given.
-  rel.RPt = poseP.rotation.inverse();
+  // as placed by the matrices given. Kept in the cache with the pose (checked by now).
+  if (cache.checkedPoseP.matches(poseP)) {
+    rel.RPt = cache.checkedPoseP.inverseRotation;
+  } else {
+    rel.RPt = poseP.rotation.inverse();
+    cache.checkedPoseP.keep(poseP, rel.RPt);
+  }
   rel.R = rel.RPt * poseQ.rotation;
   rel.t = rel.RPt * (poseQ.translation - poseP.translation);
   return rel;
