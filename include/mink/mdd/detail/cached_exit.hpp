@@ -31,30 +31,39 @@ template <class T>
 CachedExit<T> cachedExit(ExitFaceSearch<T>& search, const MddCache<T>& cache, const Vec3<T>& sl,
                          MddResult<T>& res) {
   FacetCheck<T>& check = search.check();
+  // Each kept face rebuilt (its plane from its features) only when it is looked at: a
+  // separated query whose first kept face separates needs nothing of the other.
   MFace<T> kept[2];
   T tk[2] = {T(0), T(0)};
-  int order[2] = {0, 1};
-  for (int i = 0; i < 2; ++i) {
-    kept[i] = search.rebuild(cache.exitFaces[i]);
-    if (!kept[i].valid()) continue;
-    const T ns = kept[i].N.dot(sl);
-    if (ns == T(0)) {
-      kept[i] = MFace<T>();
-      continue;
+  bool built[2] = {false, false};
+  auto face = [&](int i) -> const MFace<T>& {
+    if (!built[i]) {
+      built[i] = true;
+      kept[i] = search.rebuild(cache.exitFaces[i]);
+      if (kept[i].valid()) {
+        const T ns = kept[i].N.dot(sl);
+        if (ns == T(0))
+          kept[i] = MFace<T>();
+        else
+          tk[i] = kept[i].k / ns;
+      }
     }
-    tk[i] = kept[i].k / ns;
-  }
+    return kept[i];
+  };
   auto separates = [&](int i) {
-    if (!kept[i].valid()) return false;
+    if (!face(i).valid()) return false;
     const bool isHi = kept[i].N.dot(sl) > T(0);
     return isHi ? tk[i] < T(0) : tk[i] > T(0);
   };
-  if (!separates(0) && separates(1)) std::swap(order[0], order[1]);
+  // A separating face first: it answers alone. (Both separate only where both are faces of
+  // M at the same end of the line's stretch in M, a tie that either answers.)
+  int order[2] = {0, 1};
+  if (separates(1)) std::swap(order[0], order[1]);
   MFace<T> lo, hi;
   T tlo = T(0), thi = T(0);
   const MFace<T>* witnessed = nullptr;  // the face whose witnesses check holds
   for (int i : order) {
-    const MFace<T>& m = kept[i];
+    const MFace<T>& m = face(i);
     if (!m.valid()) continue;
     const bool isHi = m.N.dot(sl) > T(0);
     if (isHi ? hi.valid() : lo.valid()) continue;
