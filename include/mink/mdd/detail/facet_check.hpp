@@ -151,12 +151,15 @@ class FacetCheck {
     // The face's polygon in cyclic order; ids index setP × setQ as in hitSets (i·|setQ| + j).
     // Each vertex of P and of Q placed once (y = p − q, as formed from the pair before).
     auto add = [&](const Vec3<T>& y, int id) { cache_.points2.push_back({{y.dot(u1_), y.dot(u2_)}, id}); };
+    Vec3<T> placedQ[2];                // setQ's vertices in P's frame, for setWitnesses (FV, EE)
+    const Vec3<T>* placed = nullptr;
     switch (m.type) {
       case MddFaceType::FV: {
         for (int v : P.faceVertices(m.a)) cache_.setP.push_back(v);
         cache_.setQ.push_back(m.b);
-        const Vec3<T> q = F_.q(m.b);
-        for (int i = 0; i < static_cast<int>(cache_.setP.size()); ++i) add(P.vertex(cache_.setP[i]) - q, i);
+        placedQ[0] = F_.q(m.b);
+        placed = placedQ;
+        for (int i = 0; i < static_cast<int>(cache_.setP.size()); ++i) add(P.vertex(cache_.setP[i]) - placedQ[0], i);
         break;
       }
       case MddFaceType::VF: {
@@ -174,7 +177,10 @@ class FacetCheck {
         cache_.setQ.push_back(eq.second);
         const Vec3<T>& p0 = P.vertex(ep.first);
         const Vec3<T>& p1 = P.vertex(ep.second);
-        const Vec3<T> q0 = F_.q(eq.first), q1 = F_.q(eq.second);
+        placedQ[0] = F_.q(eq.first);
+        placedQ[1] = F_.q(eq.second);
+        placed = placedQ;
+        const Vec3<T>&q0 = placedQ[0], &q1 = placedQ[1];
         add(p0 - q0, 0);  // (0, 0)
         add(p1 - q0, 2);  // (1, 0)
         add(p1 - q1, 3);  // (1, 1)
@@ -186,7 +192,7 @@ class FacetCheck {
     }
     OriginLocation<T> loc;
     if (!locateOriginConvex(cache_.points2, loc)) return false;
-    setWitnesses(loc);
+    setWitnesses(loc, placed);
     return true;
   }
 
@@ -307,15 +313,18 @@ class FacetCheck {
   /// The rounding slack of the facet checks (length; 0 for exact T).
   const T& slack() const { return numTol_; }
 
-  void setWitnesses(const OriginLocation<T>& loc) {
+  /// placedQ: setQ's vertices in P's frame where the caller has them (else computed).
+  void setWitnesses(const OriginLocation<T>& loc, const Vec3<T>* placedQ = nullptr) {
     const ConvexPolyhedron<T>& P = F_.P();
     wP_ = Vec3<T>::Zero();
     wQ_ = Vec3<T>::Zero();
+    const int nq = static_cast<int>(cache_.setQ.size());
     for (int i = 0; i < loc.count; ++i) {
-      const int ip = loc.id[i] / static_cast<int>(cache_.setQ.size());
-      const int iq = loc.id[i] % static_cast<int>(cache_.setQ.size());
+      // ids are i·|setQ| + j >= 0; no division for the common sizes (FV 1, EE 2).
+      const int ip = nq == 1 ? loc.id[i] : nq == 2 ? loc.id[i] >> 1 : loc.id[i] / nq;
+      const int iq = nq == 1 ? 0 : nq == 2 ? loc.id[i] & 1 : loc.id[i] % nq;
       wP_ += loc.weight[i] * P.vertex(cache_.setP[ip]);
-      wQ_ += loc.weight[i] * F_.q(cache_.setQ[iq]);
+      wQ_ += loc.weight[i] * (placedQ ? placedQ[iq] : F_.q(cache_.setQ[iq]));
     }
   }
 
