@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -119,8 +120,23 @@ template <class T>
 T timesPow2(const T& x, int k) {
   static_assert(!ScalarTraits<T>::isExact, "timesPow2(scalar): inexact scalars only");
   if (k == 0) return x;
-  if (k > 0 && k <= 62) return x * T(std::uint64_t(1) << k);
-  if (k < 0 && k >= -62) return x * (T(1) / T(std::uint64_t(1) << -k));
+  if (k >= -62 && k <= 62) {
+    // 2^k itself: its IEEE bits for double and float (no division on the hot path), an
+    // exact quotient otherwise.
+    if constexpr (std::is_same<T, double>::value && std::numeric_limits<double>::is_iec559) {
+      const std::uint64_t bits = static_cast<std::uint64_t>(1023 + k) << 52;
+      double p;
+      std::memcpy(&p, &bits, sizeof p);
+      return x * p;
+    } else if constexpr (std::is_same<T, float>::value && std::numeric_limits<float>::is_iec559) {
+      const std::uint32_t bits = static_cast<std::uint32_t>(127 + k) << 23;
+      float p;
+      std::memcpy(&p, &bits, sizeof p);
+      return x * p;
+    } else {
+      return k > 0 ? x * T(std::uint64_t(1) << k) : x * (T(1) / T(std::uint64_t(1) << -k));
+    }
+  }
   using std::ldexp;
   return ldexp(x, k);
 }
