@@ -347,7 +347,10 @@ mink::Pose<double> decodePose(Decoder& in, int unitExp, bool isB) {
 // A small rigid motion: a rotation by about 2^-9 rad per unit of three int8, a shift of
 // 2^-7 units per int8.
 mink::Pose<double> moved(const mink::Pose<double>& p, Decoder& in, int unitExp) {
-  Eigen::Quaterniond q(1.0, std::ldexp(in.i8(), -10), std::ldexp(in.i8(), -10), std::ldexp(in.i8(), -10));
+  // Read in order (a function's arguments are evaluated in an unspecified order: g++ and
+  // clang decoded the same bytes to different rotations).
+  const double x = std::ldexp(in.i8(), -10), y = std::ldexp(in.i8(), -10), z = std::ldexp(in.i8(), -10);
+  Eigen::Quaterniond q(1.0, x, y, z);
   q.normalize();
   mink::Pose<double> r = p;
   r.rotation = q.toRotationMatrix() * p.rotation;
