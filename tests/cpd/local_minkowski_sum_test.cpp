@@ -492,6 +492,38 @@ TEST(LocalMinkowskiSum, SubnormalFacetsBesideAUnitMeshGetAFiniteOffset) {
   }
 }
 
+TEST(LocalMinkowskiSum, FacetsFarSmallerThanTheirDistanceAreNotCut) {
+  // fuzz/regressions_mesh/subnormal_cubes_offset_3_not_cut: two cubes 1.1e-308 across,
+  // B 3 above A. Every a - b rounds to z = -3, so the sum the trimming sees is flat:
+  // dozens of coplanar facets, each cut by every other's edges with exact predicates on
+  // subnormal coordinates (1 s per update), into pieces that all had no area in double
+  // and were dropped. Such a facet is now counted and not cut; the patch is the same
+  // (empty). At unit scale the same scene is cut as before.
+  const std::vector<std::array<int, 3>> tri = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                                               {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  for (const double s : {0x0.8p-1022, 1e-300, 1.0}) {
+    std::vector<V> c;
+    for (int i = 0; i < 8; ++i) c.push_back(V(i & 1 ? s : 0, i & 2 ? s : 0, i & 4 ? s : 0));
+    const Mesh A = Mesh::fromMesh(c, tri), B = Mesh::fromMesh(c, tri);
+    mink::Pose<double> pA, pB;
+    pB.rotation = Eigen::AngleAxisd(0.078, V(0.1, -1, 0.01).normalized()).toRotationMatrix();
+    pB.translation = V(0, -s, 3);
+    mink::LocalMinkowskiSum<double> local(A, B);
+    const auto& P = local.update(pA, pB, V(0, 0, -3), 1.5 * s);
+    char side[32];
+    std::snprintf(side, sizeof side, "cube side %g", s);
+    SCOPED_TRACE(side);
+    EXPECT_GT(P.facetsGathered, 0);
+    if (s < 1e-200) {
+      EXPECT_GT(P.facetsBelowResolution, P.facetsGathered / 2);
+      EXPECT_EQ(P.triangles.size(), 0u);
+    } else {
+      EXPECT_EQ(P.facetsBelowResolution, 0);
+      EXPECT_GT(P.triangles.size(), 0u);
+    }
+  }
+}
+
 TEST(LocalMinkowskiSum, BadInputIsRejected) {
   const Mesh A = mesh(mink_test::lBlock()), B = mesh(mink_test::boxShape());
   mink::LocalMinkowskiSum<double> local(A, B);

@@ -33,13 +33,18 @@ struct MinkowskiPatch {
   int overlapTests = 0;     ///< collision tests made to classify pieces (on ∂M or inside M)
   int nodePairs = 0;        ///< tree node pairs visited by the culling (SphereTree, BoxTrees)
   int candidatePairs = 0;   ///< feature pairs tested for compatibility
+  /// Facets in the region too small beside their distance from the origin for any piece
+  /// of them to have an area in the coordinates' precision (a box narrower than 2^-42 of
+  /// its distance from the origin along an axis): not cut, no triangle. Nonzero explains
+  /// an empty patch of meshes far smaller than their placement (e.g. 1e-300 across, 3 away).
+  int facetsBelowResolution = 0;
   bool rebuilt = false;     ///< true when update() rebuilt from scratch (no kept state used)
 
   void clear() {
     vertices.clear();
     triangles.clear();
     pairs.clear();
-    facetsGathered = pieces = overlapTests = nodePairs = candidatePairs = 0;
+    facetsGathered = pieces = overlapTests = nodePairs = candidatePairs = facetsBelowResolution = 0;
     rebuilt = false;
   }
 };

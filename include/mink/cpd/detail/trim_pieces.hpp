@@ -227,6 +227,47 @@ void Trimmer<T>::cutByOthers(int F) {
   }
 }
 
+/// Has the piece no area to rounding: below (2^-40 of its size)², its size the largest
+/// coordinate of its corners or of their spread? Decided on the corners scaled by a
+/// power of two to a size near one, so that neither square over- or underflows.
+template <class T>
+bool Trimmer<T>::isSliver(const Poly& p) const {
+  Box3 b;
+  for (int id : p.v) b.add(toD(coords_[static_cast<std::size_t>(id)]));
+  const double size = std::max((b.hi - b.lo).maxCoeff(), std::max(b.hi.cwiseAbs().maxCoeff(), b.lo.cwiseAbs().maxCoeff()));
+  if (!(size > 0)) return true;
+  int e = 0;
+  std::frexp(size, &e);
+  const auto at = [&](std::size_t i) {
+    Eigen::Vector3d x = toD(coords_[static_cast<std::size_t>(p.v[i])]);
+    for (int k = 0; k < 3; ++k) x[k] = std::ldexp(x[k], -e);
+    return x;
+  };
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d x0 = at(0);
+  for (std::size_t i = 1; i + 1 < p.v.size(); ++i) n += (at(i) - x0).cross(at(i + 1) - x0);
+  const double s = std::ldexp(1.0, -40);
+  return !(0.5 * n.norm() > s * s);
+}
+
+/// Would every piece cut from p be a sliver (isSliver)? True when p's box is narrower
+/// than 2^-42 of m, the least largest |coordinate| of a point of the box: a piece of p
+/// (corners in p's box, to their rounding) then has size >= m and area <= sqrt(2) w² <
+/// (2^-40 m)², w the box's widest side. Such a polygon (a facet of meshes 2^-42 the size
+/// of their distance from the origin) is not cut: its pieces would all be dropped, and
+/// cutting them cost an arrangement of every coplanar neighbour's edges in exact
+/// arithmetic (seconds for two subnormal cubes 3 apart).
+template <class T>
+bool Trimmer<T>::belowResolution(const Poly& p) const {
+  Box3 b;
+  for (int id : p.v) b.add(toD(coords_[static_cast<std::size_t>(id)]));
+  double m = 0;
+  for (int a = 0; a < 3; ++a)
+    if (b.lo[a] > 0 || b.hi[a] < 0) m = std::max(m, std::min(std::abs(b.lo[a]), std::abs(b.hi[a])));
+  const double w = (b.hi - b.lo).maxCoeff();
+  return std::isfinite(m) && std::isfinite(w) && w <= std::ldexp(m, -42);
+}
+
 template <class T>
 bool Trimmer<T>::segmentMayMeetTriangle(int c0, int c1, int G) const {
   const Soup& g = soup_[static_cast<std::size_t>(G)];

@@ -135,6 +135,10 @@ class Trimmer {
     // 1. Every polygon cut into its final pieces (those inside the region).
     for (std::size_t s = 0; s < soup_.size(); ++s) {
       if (!initialPiece(static_cast<int>(s))) continue;
+      if (belowResolution(polys_[0])) {  // every piece would be a sliver
+        ++out.facetsBelowResolution;
+        continue;
+      }
       cutByOthers(static_cast<int>(s));
       for (std::size_t i = 0; i < polyCount_; ++i) {
         const Poly& p = polys_[i];
@@ -210,27 +214,10 @@ class Trimmer {
       n += (toD(coords_[static_cast<std::size_t>(p.v[i])]) - x0).cross(toD(coords_[static_cast<std::size_t>(p.v[i + 1])]) - x0);
     return 0.5 * n.stableNorm();
   }
-  /// Has the piece no area to rounding: below (2^-40 of its size)², its size the largest
-  /// coordinate of its corners or of their spread? Decided on the corners scaled by a
-  /// power of two to a size near one, so that neither square over- or underflows.
-  bool isSliver(const Poly& p) const {
-    Box3 b;
-    for (int id : p.v) b.add(toD(coords_[static_cast<std::size_t>(id)]));
-    const double size = std::max((b.hi - b.lo).maxCoeff(), std::max(b.hi.cwiseAbs().maxCoeff(), b.lo.cwiseAbs().maxCoeff()));
-    if (!(size > 0)) return true;
-    int e = 0;
-    std::frexp(size, &e);
-    const auto at = [&](std::size_t i) {
-      Eigen::Vector3d x = toD(coords_[static_cast<std::size_t>(p.v[i])]);
-      for (int k = 0; k < 3; ++k) x[k] = std::ldexp(x[k], -e);
-      return x;
-    };
-    Eigen::Vector3d n = Eigen::Vector3d::Zero();
-    const Eigen::Vector3d x0 = at(0);
-    for (std::size_t i = 1; i + 1 < p.v.size(); ++i) n += (at(i) - x0).cross(at(i + 1) - x0);
-    const double s = std::ldexp(1.0, -40);
-    return !(0.5 * n.norm() > s * s);
-  }
+  /// Has the piece no area to rounding (trim_pieces.hpp)? Such a piece is dropped.
+  bool isSliver(const Poly& p) const;
+  /// Would every piece cut from p be a sliver (trim_pieces.hpp)? Then p is not cut.
+  bool belowResolution(const Poly& p) const;
 
   // ----- Patches ----------------------------------------------------------------------
 
