@@ -22,6 +22,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -390,6 +391,30 @@ TEST(ContinuousPenetrationDepth, ApproximateWithinTheCapsIsAPointOfTheBoundary) 
   EXPECT_LE(std::min((q - lo).cwiseAbs().minCoeff(), (hi - q).cwiseAbs().minCoeff()), 1e-12);
   EXPECT_GE(r.depth, 0.3 - 1e-12);
   EXPECT_NEAR(r.direction.norm(), 1, 1e-12);
+}
+
+TEST(ContinuousPenetrationDepth, SubnormalDepthHasAUnitDirection) {
+  // fuzz/regressions_mesh/cpd_subnormal_depth_direction_not_unit_octahedron: an octahedron
+  // whose two apexes are 7.6e-319 apart, against itself turned: a depth of 8.3e-319, whose
+  // point has 17 significant bits; point / depth was 1e-5 off unit length. The direction
+  // is now normalised from the point scaled near one.
+  const std::vector<V> v = {V(0x0.0000000025757p-1022, 0, 0), V(0, 0, 0),       V(-256, 128, 0),
+                            V(-256, -128, 0),                  V(-256, 0, 128), V(-256, 0, -128)};
+  const std::vector<std::array<int, 3>> tri = {{0, 2, 4}, {0, 5, 2}, {0, 4, 3}, {0, 3, 5},
+                                               {1, 4, 2}, {1, 2, 5}, {1, 3, 4}, {1, 5, 3}};
+  const Mesh A = Mesh::fromMesh(v, tri);
+  M3 R;
+  R << 0.33333333333333348, -0.8717948717948717, -0.35897435897435892, 0.66666666666666663, 0.48717948717948723,
+      -0.5641025641025641, 0.66666666666666663, -0.051282051282051266, 0.74358974358974361;
+  const V t(-256, -256, -256);
+  mink::ContinuousPenetrationDepth<double> cpd(A, A);
+  for (const mink::CpdResult<double>& r : {cpd.query(pose(M3::Identity(), t), pose(R, t)),
+                                           mink::penetrationDepth(A, pose(M3::Identity(), t), A, pose(R, t))}) {
+    ASSERT_NE(r.status, CpdStatus::Separated);
+    EXPECT_LT(r.depth, 1e-300);
+    EXPECT_NEAR(r.direction.norm(), 1, 1e-15);
+    EXPECT_NEAR(r.normal.norm(), 1, 1e-15);
+  }
 }
 
 TEST(ContinuousPenetrationDepth, TouchingAndApartAreSeparated) {

@@ -247,7 +247,7 @@ class PenetrationSearch {
     if (!haveBest) {
       // No patch at all within the caps: report the seed (on ∂M to the bisection's width).
       best.point = q;
-      best.normal = q / q.stableNorm();
+      best.normal = unit(q);
       best.residual = T(0);
     }
     finish(best, CpdStatus::Approximate, mode, res);
@@ -280,6 +280,13 @@ class PenetrationSearch {
     ConvolutionPair pair;
   };
 
+  /// x / |x|, from x scaled near one first: a subnormal x (a depth of 1e-319) has too few
+  /// digits for x / |x| to be unit.
+  static Vec3<T> unit(const Vec3<T>& x) {
+    const Vec3<T> u = detail::unitOrder(x);
+    return u / u.stableNorm();
+  }
+
   void finish(const Candidate& c, CpdStatus status, Mode mode, CpdResult<T>& res) {
     if (c.point == Vec3<T>::Zero()) {
       // q = o: o on ∂M (touching, where the exact test on the patch's corners missed it
@@ -297,7 +304,7 @@ class PenetrationSearch {
     res.status = status;
     res.point = c.point;
     res.depth = c.point.stableNorm();
-    res.direction = res.depth > T(0) ? Vec3<T>(c.point / res.depth) : Vec3<T>::Zero();
+    res.direction = res.depth > T(0) ? unit(c.point) : Vec3<T>::Zero();
     res.normal = c.normal;
     res.pair = c.pair;
     res.residual = c.normal.cross(c.point).stableNorm();
@@ -476,8 +483,7 @@ class PenetrationSearch {
         best = d;
         Vec3<T> p;
         for (int k = 0; k < 3; ++k) p[k] = centre[k] + std::ldexp(pl[k], e);
-        const T len = p.stableNorm();
-        step = {p, len > T(0) ? Vec3<T>(p / len) : Vec3<T>::Zero(), T(0), patch.pairs[t]};
+        step = {p, p == Vec3<T>::Zero() ? Vec3<T>::Zero() : unit(p), T(0), patch.pairs[t]};
       }
     }
     found = step;
