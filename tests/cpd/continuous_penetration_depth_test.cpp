@@ -393,6 +393,34 @@ TEST(ContinuousPenetrationDepth, ApproximateWithinTheCapsIsAPointOfTheBoundary) 
   EXPECT_NEAR(r.direction.norm(), 1, 1e-12);
 }
 
+TEST(ContinuousPenetrationDepth, ConeSlidingInAnArmOfTheAxesNeedsOneBallPerFrame) {
+  // The cone/axes motion of the paper's section 7 (benchmarks/cpd_paper_scenes.hpp): the
+  // cone, apex down, pressed 0.3 into an arm and sliding along it while turning. Its
+  // Phong projection sits on the crease between a flat FV facet of M and a sloped EE
+  // facet. Where a piece of the flat facet had a corner inside a side of the sloped one
+  // (a T-junction: the flat facet cut by a plane that stops at the crease), the vertex
+  // normals jumped along the crease, the projection fell between the two triangles'
+  // interpolations, and frames took 2 - 4 balls, 6 of 19 ending Approximate. The patch's
+  // triangles now meet edge to edge there: one ball per frame, every frame Penetrating.
+  const Mesh A = mesh(mink_test::axes(3)), B = mesh(mink_test::cone(500, 1.0, 2.0));
+  const M3 R0 = rotation(M_PI, V(1, 0, 0));
+  const V approach(0, 0, -1), aim(2, 0, 1.5);
+  const double D = 4 * (A.extent() + B.extent()) + 4;
+  const V start = aim - D * approach;
+  mink::MeshOverlap<double> ov(A, B, R0, start);
+  double lo = 0, hi = D;
+  for (int i = 0; i < 60; ++i) (ov.overlaps(V(0.5 * (lo + hi) * approach)) ? hi : lo) = 0.5 * (lo + hi);
+  const V t0 = start + (hi + 0.3) * approach;
+  mink::ContinuousPenetrationDepth<double> cpd(A, B);
+  const Pose I = pose(M3::Identity(), V::Zero());
+  for (int f = 0; f < 20; ++f) {
+    const mink::CpdResult<double> r = cpd.query(I, pose(rotation(0.01 * f, V(0.2, 0.3, 1)) * R0, t0 + f * V(-0.03, 0, 0)));
+    ASSERT_EQ(r.status, CpdStatus::Penetrating) << "frame " << f;
+    expectPhongCondition(r);
+    if (f > 0) EXPECT_EQ(r.iterations, 1) << "frame " << f;
+  }
+}
+
 TEST(ContinuousPenetrationDepth, SubnormalDepthHasAUnitDirection) {
   // fuzz/regressions_mesh/cpd_subnormal_depth_direction_not_unit_octahedron: an octahedron
   // whose two apexes are 7.6e-319 apart, against itself turned: a depth of 8.3e-319, whose

@@ -96,6 +96,22 @@ std::set<std::tuple<int, int, int>> facetSet(const std::vector<mink::Convolution
   return s;
 }
 
+/// Patch corners lying inside an edge of a triangle they are not a corner of (a
+/// T-junction: the triangles do not meet edge to edge there), within 1e-12 of the scene.
+int tJunctions(const mink::MinkowskiPatch<double>& P, double L) {
+  int n = 0;
+  for (const auto& t : P.triangles)
+    for (int e = 0; e < 3; ++e) {
+      const V a = P.vertices[t[e]], d = P.vertices[t[(e + 1) % 3]] - a;
+      for (int v = 0; v < static_cast<int>(P.vertices.size()); ++v) {
+        if (v == t[0] || v == t[1] || v == t[2]) continue;
+        const double s = (P.vertices[v] - a).dot(d) / d.squaredNorm();
+        if (s > 1e-9 && s < 1 - 1e-9 && (P.vertices[v] - a - s * d).norm() < 1e-12 * L) ++n;
+      }
+    }
+  return n;
+}
+
 TEST(LocalMinkowskiSum, ThePartOfTheWholeBoundaryInTheBall) {
   std::mt19937 rng(1401);
   std::uniform_real_distribution<double> U(-1, 1);
@@ -136,8 +152,10 @@ TEST(LocalMinkowskiSum, ThePartOfTheWholeBoundaryInTheBall) {
             ++inBall;
             if (mink_test::distanceToPatch(P, x) > 1e-9 * L) ++missing;
           }
-      std::printf("[cpd] %-22s ball %d: r %.2f, %zu triangles (whole %zu), facets %d, pieces %d, collision tests %d, %d points of the whole in the ball\n",
-                  pr.name.c_str(), k, r, P.triangles.size(), full.triangles.size(), P.facetsGathered, P.pieces, P.overlapTests, inBall);
+      const int tj = tJunctions(P, L);
+      std::printf("[cpd] %-22s ball %d: r %.2f, %zu triangles (whole %zu), facets %d, pieces %d, collision tests %d, %d points of the whole in the ball, %d T-junctions\n",
+                  pr.name.c_str(), k, r, P.triangles.size(), full.triangles.size(), P.facetsGathered, P.pieces, P.overlapTests, inBall, tj);
+
       EXPECT_EQ(off, 0) << "ball " << k << ": triangles off the whole boundary";
       EXPECT_EQ(outside, 0) << "ball " << k << ": triangles not meeting the ball";
       EXPECT_EQ(missing, 0) << "ball " << k << ": points of the whole boundary in the ball not covered";

@@ -17,7 +17,9 @@ namespace mink {
 /// (FV / VF / EE) and the features of A and B whose facet it is part of. Triangles of
 /// one facet share their corners' indices, and so do neighbouring facets along the
 /// convolution's edges: corners are identified by how they were made (a point a_i − b_j,
-/// an edge of one facet cut by the plane of another, ...), not by their coordinates.
+/// an edge of one facet cut by the plane of another, ...), not by their coordinates. A
+/// corner of one piece inside a side of another on the same named line is a corner of
+/// both (no T-junction there; Phong normals are continuous across it).
 template <class T>
 struct MinkowskiPatch {
   /// #V corners, world frame, length unit of the meshes.

@@ -315,6 +315,45 @@ bool Trimmer<T>::onBoundary(int piece, MeshOverlap<T>& overlap) const {
   return false;
 }
 
+/// A soup edge is one line in every polygon; the cut of F by G's plane is the cut of G by
+/// F's; a box face meets each polygon in a line of its own.
+template <class T>
+TrimKey Trimmer<T>::lineOf(int soup, std::uint64_t label) {
+  if (TrimLabel::isEdge(label)) return TrimKey{{label, TrimLabel::kNone, TrimLabel::kNone}};
+  std::uint64_t own = TrimLabel::plane(soup);
+  if (TrimLabel::isPlane(label) && label < own) std::swap(label, own);
+  return TrimKey{{own, label, TrimLabel::kNone}};
+}
+
+template <class T>
+bool Trimmer<T>::lineOrder(const std::pair<TrimKey, int>& x, const std::pair<TrimKey, int>& y) {
+  for (int i = 0; i < 3; ++i)
+    if (x.first.k[i] != y.first.k[i]) return x.first.k[i] < y.first.k[i];
+  return x.second < y.second;
+}
+
+/// The corners of the emitted pieces by the line they lie on (each side's two ends, under
+/// the side's line): a side of one piece may run past a corner of its neighbour across the
+/// line (the neighbour cut there by a plane that does not reach this piece). emit() puts
+/// such corners into the side, so that the patch's triangles meet edge to edge and share
+/// their corners — the Phong surface's vertex normals are then continuous across facets
+/// (with a T-junction, the normal field jumped along the side and Phong projections were
+/// lost there: cone/axes needed two to four balls per frame).
+template <class T>
+void Trimmer<T>::conform() {
+  lineCorners_.clear();
+  for (const int i : emitted_) {
+    const Final& f = final_[static_cast<std::size_t>(i)];
+    for (int k = 0; k < f.count; ++k) {
+      const TrimKey line = lineOf(f.soup, finalE_[static_cast<std::size_t>(f.first + k)]);
+      lineCorners_.push_back({line, finalV_[static_cast<std::size_t>(f.first + k)]});
+      lineCorners_.push_back({line, finalV_[static_cast<std::size_t>(f.first + (k + 1) % f.count)]});
+    }
+  }
+  std::sort(lineCorners_.begin(), lineCorners_.end(), lineOrder);
+  lineCorners_.erase(std::unique(lineCorners_.begin(), lineCorners_.end()), lineCorners_.end());
+}
+
 template <class T>
 void Trimmer<T>::emit(int piece, MinkowskiPatch<T>& out) {
   const Final& fp = final_[static_cast<std::size_t>(piece)];
@@ -329,15 +368,53 @@ void Trimmer<T>::emit(int piece, MinkowskiPatch<T>& out) {
     }
     return o;
   };
-  const int* v = &finalV_[static_cast<std::size_t>(fp.first)];
-  for (int i = 1; i + 1 < fp.count; ++i) {
+  auto add = [&](int a, int b, int c) {
     // A fan triangle of a piece that meets the ball may itself miss it: the patch keeps
     // only triangles that meet the ball.
-    const int tri[3] = {v[0], v[i], v[i + 1]};
-    if (region_.ball && !polygonMeetsBall(tri, 3)) continue;
-    out.triangles.push_back({index(v[0]), index(v[i]), index(v[i + 1])});
+    const int tri[3] = {a, b, c};
+    if (region_.ball && !polygonMeetsBall(tri, 3)) return;
+    out.triangles.push_back({index(a), index(b), index(c)});
     out.pairs.push_back(pair);
+  };
+  const int* v = &finalV_[static_cast<std::size_t>(fp.first)];
+  const std::uint64_t* e = &finalE_[static_cast<std::size_t>(fp.first)];
+  // The piece's corners with the corners of other pieces that lie inside its sides, in
+  // order along each side (by the coordinate along the side's dominant axis: corners
+  // equal there to an end are not inside).
+  ring_.clear();
+  for (int k = 0; k < fp.count; ++k) {
+    const int a = v[k], b = v[(k + 1) % fp.count];
+    ring_.push_back(a);
+    const std::pair<TrimKey, int> lo{lineOf(fp.soup, e[k]), std::numeric_limits<int>::min()};
+    auto it = std::lower_bound(lineCorners_.begin(), lineCorners_.end(), lo, lineOrder);
+    const Vec3<T>&xa = coords_[static_cast<std::size_t>(a)], &xb = coords_[static_cast<std::size_t>(b)];
+    int ax = 0;
+    for (int d = 1; d < 3; ++d)
+      if (absValue(T(xb[d] - xa[d])) > absValue(T(xb[ax] - xa[ax]))) ax = d;
+    const T s = xb[ax] > xa[ax] ? T(1) : T(-1);
+    const std::size_t first = ring_.size();
+    for (; it != lineCorners_.end() && it->first == lo.first; ++it) {
+      const T t = coords_[static_cast<std::size_t>(it->second)][ax];
+      if (s * t > s * xa[ax] && s * t < s * xb[ax]) ring_.push_back(it->second);
+    }
+    std::sort(ring_.begin() + static_cast<std::ptrdiff_t>(first), ring_.end(), [&](int x, int y) {
+      return s * coords_[static_cast<std::size_t>(x)][ax] < s * coords_[static_cast<std::size_t>(y)][ax];
+    });
   }
+  if (ring_.size() == static_cast<std::size_t>(fp.count)) {
+    for (int i = 1; i + 1 < fp.count; ++i) add(v[0], v[i], v[i + 1]);
+    return;
+  }
+  // A fan from the piece's centroid (inside it: the piece is convex and not a sliver), so
+  // that no triangle is flat on a side that holds inserted corners.
+  Vec3<T> c = Vec3<T>::Zero();
+  for (int k = 0; k < fp.count; ++k) c += coords_[static_cast<std::size_t>(v[k])];
+  c /= T(fp.count);
+  const int mid = static_cast<int>(keys_.size());
+  keys_.push_back(TrimKey{});
+  coords_.push_back(c);
+  if constexpr (!ScalarTraits<T>::isExact) hbox_.push_back(Homog());
+  for (std::size_t k = 0; k < ring_.size(); ++k) add(mid, ring_[k], ring_[(k + 1) % ring_.size()]);
 }
 
 }  // namespace detail

@@ -19,6 +19,8 @@
 //      polygon's (the same part of ∂M once); any other piece is classified by one
 //      collision test at its centroid moved by δ along its normal, δ half the distance to
 //      the nearest other facet and to the region's boundary: the segment crosses no facet.
+//   4. The pieces on ∂M become triangles that meet edge to edge: a corner of one piece
+//      inside a side of another on the same line is put into that side (conform, emit).
 // Every corner is named by how it was made (a point a_i − b_j; a facet edge cut by a plane,
 // a box face or another edge; three planes), and computed once from its name, so that
 // neighbouring pieces and facets share it exactly. Decisions (sides of planes and lines)
@@ -168,7 +170,7 @@ class Trimmer {
       int& r = representative_[static_cast<std::size_t>(find(static_cast<int>(i)))];
       if (r < 0 || final_[i].area > final_[static_cast<std::size_t>(r)].area) r = static_cast<int>(i);
     }
-    outVertex_.clear();
+    emitted_.clear();
     for (std::size_t i = 0; i < final_.size(); ++i) {
       if (!final_[i].wanted) continue;
       const int root = find(static_cast<int>(i));
@@ -177,8 +179,12 @@ class Trimmer {
         ++out.overlapTests;
         st = onBoundary(representative_[static_cast<std::size_t>(root)], overlap) ? 1 : 0;
       }
-      if (st == 1) emit(static_cast<int>(i), out);
+      if (st == 1) emitted_.push_back(static_cast<int>(i));
     }
+    // 5. Triangles that meet edge to edge (trim_patches.hpp: conform, emit).
+    conform();
+    outVertex_.clear();
+    for (const int i : emitted_) emit(i, out);
   }
 
  private:
@@ -508,6 +514,10 @@ class Trimmer {
     return (p - closestPointOnTriangle(p, a, b, c)).squaredNorm();
   }
 
+  /// The line a side labelled `label` of a piece of `soup` lies on, as a key (trim_patches.hpp).
+  static TrimKey lineOf(int soup, std::uint64_t label);
+  static bool lineOrder(const std::pair<TrimKey, int>& x, const std::pair<TrimKey, int>& y);
+  void conform();
   void emit(int piece, MinkowskiPatch<T>& out);
 
   const ConvolutionFrame<T>* frame_ = nullptr;
@@ -568,7 +578,8 @@ class Trimmer {
   std::vector<Poly> polys_;
   std::size_t polyCount_ = 0;
   Poly scratch_;
-  std::vector<int> sides_, cutters_, coplanar_, outVertex_;
+  std::vector<int> sides_, cutters_, coplanar_, outVertex_, emitted_, ring_;
+  std::vector<std::pair<TrimKey, int>> lineCorners_;  // (line, corner) of the emitted pieces' sides
   std::vector<Final> final_;
   std::vector<int> finalV_, parent_, status_, representative_;
   std::vector<std::uint64_t> finalE_;
