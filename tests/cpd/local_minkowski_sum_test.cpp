@@ -542,6 +542,36 @@ TEST(LocalMinkowskiSum, FacetsFarSmallerThanTheirDistanceAreNotCut) {
   }
 }
 
+TEST(LocalMinkowskiSum, ConvexMapsFindAVertexWhoseNeighboursAgreeToRounding) {
+  // fuzz/regressions_mesh/convex_map_vertex_unregistered_needle_star_box_2e-308_tetra: a
+  // box 1.1e-308 across with one corner pulled to x = -1. From that corner its three
+  // neighbours lie in the same direction to 1e-308, so the convex map could not compute
+  // its cone (the rays are cross products of the neighbour directions) and registered it
+  // nowhere: ConvexMaps missed its VF facets. Such a vertex is now listed in every cell.
+  const double h = 0x0.4p-1022, w = 0x0.8p-1022;
+  const std::vector<V> a = {V(-h, -w, -w), V(h, -w, -w), V(-1, 0, -w), V(h, 0, -w),
+                            V(-h, -w, 0),  V(h, -w, 0),  V(-h, 0, 0),  V(h, 0, 0)};
+  const std::vector<std::array<int, 3>> box = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                                               {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  const Mesh A = Mesh::fromMesh(a, box);
+  const Mesh B = Mesh::fromMesh(std::vector<V>{V(0, 0, 0), V(2, 0, 0), V(0, 2, 0), V(0, 0, 2)},
+                                std::vector<std::array<int, 3>>{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+  mink::Pose<double> pA, pB;
+  pA.translation = V(-w, w, -h);
+  pB.rotation << 0.33333333333333348, -0.8717948717948717, -0.35897435897435892, 0.66666666666666663,
+      0.48717948717948723, -0.5641025641025641, 0.66666666666666663, -0.051282051282051266, 0.74358974358974361;
+  pB.translation = V(h, w, -h);
+  mink::LocalMinkowskiSumOptions<double> brute, maps;
+  brute.method = mink::LocalSumMethod::BruteForce;
+  maps.method = mink::LocalSumMethod::ConvexMaps;
+  mink::LocalMinkowskiSum<double> lb(A, B, brute), lm(A, B, maps);
+  const V c(-0x1p-1022, -h, -h);
+  lb.update(pA, pB, c, 0x0.1p-1022);
+  lm.update(pA, pB, c, 0x0.1p-1022);
+  EXPECT_FALSE(lb.facets().empty());
+  EXPECT_EQ(facetSet(lm.facets()), facetSet(lb.facets()));
+}
+
 TEST(LocalMinkowskiSum, BadInputIsRejected) {
   const Mesh A = mesh(mink_test::lBlock()), B = mesh(mink_test::boxShape());
   mink::LocalMinkowskiSum<double> local(A, B);

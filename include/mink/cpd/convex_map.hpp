@@ -369,11 +369,15 @@ class ConvexMap {
     }
     // The cone's extreme rays are among the cross products of two constraint normals.
     rays_.clear();
+    bool unsure = false;  // a pair too close to parallel for its cross product to say
     for (std::size_t i = 0; i < dirs_.size(); ++i)
       for (std::size_t j = i + 1; j < dirs_.size(); ++j) {
         V3 r = dirs_[i].cross(dirs_[j]);
         const double l = r.norm();
-        if (!(l > 1e-12)) continue;
+        if (!(l > 1e-12)) {
+          unsure = true;
+          continue;
+        }
         r /= l;
         for (const V3& cand : {r, V3(-r)}) {
           bool ok = true;
@@ -381,6 +385,13 @@ class ConvexMap {
           if (ok) rays_.push_back(cand);
         }
       }
+    if (rays_.empty() && unsure) {
+      // No ray found, but some were lost: the star's directions agree to 1e-12 in double
+      // (a vertex 1 away from neighbours that lie within 1e-308 of each other). Its cone
+      // cannot be told here: v goes into every cell (the exact predicates decide).
+      for (auto& set : sets) set.push_back(v);
+      return;
+    }
     if (rays_.empty()) return;  // no direction makes v a local maximum (a saddle)
     walk.begin(H_->numFaces());
     for (const V3& r : rays_) {
