@@ -82,6 +82,13 @@ class ConvexMap {
       }
     H_ = std::make_shared<const ConvexPolyhedron<double>>(ConvexPolyhedron<double>::fromPoints(pts));
     const int nf = H_->numFaces();
+    reach_.assign(static_cast<std::size_t>(nf), 0.0);
+    for (int f = 0; f < nf; ++f) {
+      const int s = H_->faceStart(f), n = H_->faceSize(f);
+      for (int k = 1; k < n; ++k)
+        reach_[static_cast<std::size_t>(f)] = std::max(reach_[static_cast<std::size_t>(f)],
+                                                      (H_->vertex(H_->heOrigin(s + k)) - H_->vertex(H_->heOrigin(s))).norm());
+    }
     std::vector<std::vector<int>> vsets(static_cast<std::size_t>(nf)), esets(static_cast<std::size_t>(nf));
     Walk walk;
     for (int v = 0; v < X.numVertices(); ++v) registerVertex(X, v, walk, vsets);
@@ -118,7 +125,7 @@ class ConvexMap {
       }
       // A sliver cell (corners equal to rounding) passes every side test for its antipode
       // too: a cell holds d only if d is on its side of the origin.
-      if (next < 0 && !facesToward(f, d)) next = least;
+      if (next < 0 && (!facesToward(f, d) || !nearTinyCell(f, d))) next = least;
       if (next < 0) return f;
       f = next;
     }
@@ -128,12 +135,26 @@ class ConvexMap {
     for (int g = 0; g < H.numFaces(); ++g) {
       double m = 1e300;
       const int s = H.faceStart(g), n = H.faceSize(g);
-      if (!facesToward(g, d)) continue;
+      if (!facesToward(g, d) || !nearTinyCell(g, d)) continue;
       for (int k = 0; k < n; ++k)
         m = std::min(m, H.vertex(H.heOrigin(s + k)).cross(H.vertex(H.heTarget(s + k))).dot(d));
       if (m > bestSide) bestSide = m, best = g;
     }
     return best;
+  }
+
+  /// False where cell f is tiny (its corners within kTinyCell of each other) and d is not
+  /// near it. A tiny cell's sides are cross products of nearly equal unit vectors, whose
+  /// directions are rounding: every side test can pass for a d far from it (a cell of
+  /// three normals 4e-16 apart held directions 0.012 rad away, and a walk from it never
+  /// reached the arc it was asked about). Such a cell holds d only within its own reach
+  /// (and kTinyCell) of its first corner; a larger cell's side tests are accurate to
+  /// rounding over its size.
+  bool nearTinyCell(int f, const V3& d) const {
+    const double reach = reach_[static_cast<std::size_t>(f)];
+    if (!(reach < kTinyCell)) return true;
+    const double l = d.norm();
+    return l > 0 && (d / l - H_->vertex(H_->heOrigin(H_->faceStart(f)))).norm() <= reach + kTinyCell;
   }
 
   /// Is d on cell f's side of the origin? (d in the cone over f is a non-negative
@@ -149,6 +170,9 @@ class ConvexMap {
   /// and arc test is widened: a direction located in the map may be off the one the exact
   /// predicates see by at most half of it (see answersPlacement).
   static constexpr double kSlack = 1e-7;
+  /// A cell whose corners are all within this (chord) of its first corner is located by
+  /// distance, not by its sides (nearTinyCell): far below kSlack.
+  static constexpr double kTinyCell = 1e-9;
 
   /// A lower bound on the smallest height of X's triangles (0 if rounding could hide a
   /// degenerate one), and the largest |coordinate| of X's vertices, both in double.
@@ -424,6 +448,7 @@ class ConvexMap {
 
   std::shared_ptr<const ConvexPolyhedron<double>> H_;
   double leastHeight_ = 0.0, extent_ = 0.0;
+  std::vector<double> reach_;  // per cell: the largest distance of a corner from its first
   std::vector<int> vStart_, vItems_, eStart_, eItems_;
   // Build-time scratch.
   std::vector<V3> poly_, clipped_, dirs_, rays_;
