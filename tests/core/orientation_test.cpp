@@ -236,6 +236,60 @@ TEST(Orient3dExact, TinyCoordinatesBesideUnitOnes) {
   EXPECT_EQ(failures, 0);
 }
 
+// Coordinates spread over the whole double range at once (2^-1074 beside 2^290, the mesh
+// fuzzer's needle boxes: fuzz/regressions_mesh/needle_box_2e81_subnormal_exact_stage),
+// where nothing cancels and the exact stage keeps nearly all of its 192 terms: in double
+// (which moves to long double for the range) and in long double, generic, coplanar
+// (z = 0), repeated and one-ulp-off points, against Gmpq. The terms are summed as a tree of
+// linear merges (the same signs as growing one expansion term by term, 5x faster here).
+TEST(Orient3dExact, CoordinatesAcrossTheWholeRange) {
+  std::mt19937 rng(9110u);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_int_distribution<int> ex(-1074, 290), mode(0, 4);
+  int failures = 0;
+  for (int i = 0; i < 3000; ++i) {
+    Vec3<double> p[4];
+    const int m = mode(rng);
+    for (auto& q : p)
+      for (int k = 0; k < 3; ++k) q[k] = m == 1 && k == 2 ? 0.0 : std::ldexp(u(rng), ex(rng));
+    if (m == 2) p[3] = p[i % 3];
+    if (m == 3) p[3][0] = std::nextafter(p[1][0], 1.0), p[3][1] = p[1][1], p[3][2] = p[1][2];
+    if (m == 4) p[3] = p[0] + 0.5 * (p[1] - p[0]);  // near the line, rounded
+    const std::string what = "seed 9110 mode " + std::to_string(m) + " #" + std::to_string(i);
+    expectExact(p[0], p[1], p[2], p[3], what, failures);
+    Vec3<long double> l[4];
+    for (int k = 0; k < 4; ++k) l[k] = p[k].cast<long double>();
+    expectExact(l[0], l[1], l[2], l[3], what + " in long double", failures);
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+// twoProduct in long double: Dekker's product of halves inside 2^±(emax/2 - digits), the
+// fma outside (glibc's fmal: exact, and the reference here), zero where a factor is zero.
+TEST(TwoProduct, LongDoubleIsExactAcrossItsExponentRange) {
+  using L = long double;
+  std::mt19937 rng(9111u);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int emax = std::numeric_limits<L>::max_exponent, emin = std::numeric_limits<L>::min_exponent;
+  std::uniform_int_distribution<int> ex(emin, emax - 2);
+  int failures = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const L a = std::ldexp(static_cast<L>(u(rng)) + static_cast<L>(u(rng)) * 0x1p-40L, ex(rng));
+    // b's exponent keeps a * b inside the normal range (edges included).
+    const int ea = std::ilogb(a);
+    int lo = std::max(emin, emin + 70 - ea), hi = std::min(emax - 2, emax - 3 - ea);
+    if (i % 4 == 0) lo = hi = emax / 2 - std::numeric_limits<L>::digits + (i % 8 == 0 ? 1 : 0);  // at the guard
+    if (lo > hi) continue;
+    const L b = i % 97 == 0 ? L(0) : std::ldexp(static_cast<L>(u(rng)), std::uniform_int_distribution<int>(lo, hi)(rng));
+    L x, y;
+    mink::detail::twoProduct(a, b, x, y);
+    const L want = std::fma(a, b, -x);
+    if ((x != a * b || y != want) && failures++ < 8)
+      ADD_FAILURE() << "exponents " << std::ilogb(a) << ", " << std::ilogb(b) << ": low part " << static_cast<double>(y) << " vs fma " << static_cast<double>(want);
+  }
+  EXPECT_EQ(failures, 0);
+}
+
 // accurateCross: the direction of (b - a) x (c - a) to about one ulp of its length, for
 // sliver triangles whose width is far below the rounding of their coordinates' low parts
 // (a 2^-1022-wide face beside coordinates of size 1 came out with the normal (0, 1, 0)

@@ -61,11 +61,52 @@ inline void twoSum(F a, F b, F& x, F& y) {
   y = (a - av) + (b - bv);
 }
 
-// x + y == a * b exactly.
+// x + y == a * b exactly: by fma, or, for a type wider than double (long double, which
+// the exact stage uses for the range), by Dekker's product of Veltkamp halves where both
+// factors are far enough inside the exponent range for every partial product to be exact
+// (within 2^±(emax/2 − digits)): glibc's fmal is software, with floating-point environment
+// calls that took half the time of inputs decided in long double.
+template <class F>
+constexpr F powerOfTwo(int e) {
+  F r = 1;
+  for (; e > 0; --e) r *= 2;
+  for (; e < 0; ++e) r /= 2;
+  return r;
+}
+
+// The fma a * b − x out of line: a compiler may evaluate an inline fma on both sides of
+// the branch below (clang did: glibc's fmal on every call); a call it cannot see into is
+// not evaluated speculatively.
+template <class F>
+[[gnu::noinline]] F productError(F a, F b, F x) {
+  return std::fma(a, b, -x);
+}
+
 template <class F>
 inline void twoProduct(F a, F b, F& x, F& y) {
   x = a * b;
-  y = std::fma(a, b, -x);
+  using L = std::numeric_limits<F>;
+  if constexpr (L::radix == 2 && L::digits > 53 && L::max_exponent > 2 * L::digits + 2) {
+    constexpr F lo = powerOfTwo<F>(L::min_exponent / 2 + L::digits);
+    constexpr F hi = powerOfTwo<F>(L::max_exponent / 2 - L::digits);
+    constexpr F split = powerOfTwo<F>((L::digits + 1) / 2) + F(1);
+    const F aa = std::abs(a), ab = std::abs(b);
+    if (aa == F(0) || ab == F(0)) {
+      y = F(0);
+      return;
+    }
+    if (aa >= lo && aa <= hi && ab >= lo && ab <= hi) {
+      F c = split * a;
+      const F ahi = c - (c - a), alo = a - ahi;
+      c = split * b;
+      const F bhi = c - (c - b), blo = b - bhi;
+      y = ((ahi * bhi - x) + ahi * blo + alo * bhi) + alo * blo;
+      return;
+    }
+    y = productError(a, b, x);
+  } else {
+    y = std::fma(a, b, -x);
+  }
 }
 
 /// An expansion in storage the caller owns (a stack array of `capacity` numbers), so that
@@ -155,6 +196,45 @@ inline void addTripleProduct(E& acc, F a, F b, F c, E& prod, E& term, E& tmp) {
   }
 }
 
+/// h = e + f exactly, in one pass over the two merged by magnitude (Shewchuk's
+/// Fast-Expansion-Sum with zero elimination: the inputs strongly non-overlapping, as
+/// two-product, scale-expansion and this sum leave them under round-to-nearest-even).
+/// h.size() <= e.size() + f.size(). Linear, where growing e by each term of f is
+/// quadratic: sums of many terms are built as a tree of these.
+template <class E>
+inline void sumExpansions(const E& e, const E& f, E& h) {
+  using F = typename E::value_type;
+  h.clear();
+  std::size_t i = 0, j = 0;
+  const std::size_t m = e.size(), n = f.size();
+  if (m + n == 0) return;
+  auto next = [&]() {
+    if (j == n || (i < m && std::abs(e[i]) < std::abs(f[j]))) return e[i++];
+    return f[j++];
+  };
+  F q = next();
+  while (i < m || j < n) {
+    F x, y;
+    twoSum(q, next(), x, y);
+    if (y != F(0)) h.push_back(y);
+    q = x;
+  }
+  if (q != F(0)) h.push_back(q);
+}
+
+/// term = a * b * c exactly (at most 4 components; empty if a factor is zero).
+template <class E, class F = typename E::value_type>
+inline void tripleProduct(F a, F b, F c, E& term) {
+  term.clear();
+  if (a == F(0) || b == F(0) || c == F(0)) return;
+  F h, l, buf[2];
+  twoProduct(a, b, h, l);
+  E prod{buf, 2};
+  if (l != F(0)) prod.push_back(l);
+  prod.push_back(h);
+  scaleExpansion(prod, c, term);
+}
+
 /// The sign of a non-overlapping expansion: that of its largest non-zero component.
 template <class E>
 inline int expansionSign(const E& e) {
@@ -210,17 +290,30 @@ int exactOrient3d(const Vec3<F>& a, const Vec3<F>& b, const Vec3<F>& c, const Ve
   // det = sum over permutations (i, j, k) of sign * u_i v_j w_k.
   static const int perm[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
   static const int sgn[6] = {1, 1, 1, -1, -1, -1};
-  // 48 triple products of at most 4 terms each, grown into {0}: at most 193 terms.
-  constexpr std::size_t kTerms = 1 + 48 * 4;
-  F accBuf[kTerms], tmpBuf[kTerms], prodBuf[2], termBuf[4];
-  ExpansionView<F> acc{accBuf, kTerms}, tmp{tmpBuf, kTerms}, prod{prodBuf, 2}, term{termBuf, 4};
-  acc.push_back(F(0));
+  // 48 triple products of at most 4 terms each, summed as a tree: the 8 of each
+  // permutation (at most 32 terms), then those 6 pairwise (64, 128, 192). Where nothing
+  // cancels (coordinates 2^300 beside 2^-1000) the sum keeps every term, and growing one
+  // expansion term by term cost 193² two-sums per call.
+  using View = ExpansionView<F>;
+  F termBuf[4], tmpBuf[32], permBuf[6][32], pairBuf[3][64], fourBuf[128], allBuf[192];
+  View term{termBuf, 4}, tmp{tmpBuf, 32};
+  View per[6] = {{permBuf[0], 32}, {permBuf[1], 32}, {permBuf[2], 32},
+                 {permBuf[3], 32}, {permBuf[4], 32}, {permBuf[5], 32}};
   for (int p = 0; p < 6; ++p)
     for (int x = 0; x < 2; ++x)
       for (int y = 0; y < 2; ++y)
-        for (int z = 0; z < 2; ++z)
-          addTripleProduct(acc, u[perm[p][0]][x], v[perm[p][1]][y], F(sgn[p] * w[perm[p][2]][z]), prod, term, tmp);
-  return expansionSign(acc);
+        for (int z = 0; z < 2; ++z) {
+          tripleProduct(u[perm[p][0]][x], v[perm[p][1]][y], F(sgn[p] * w[perm[p][2]][z]), term);
+          if (term.empty()) continue;
+          sumExpansions(per[p], term, tmp);
+          per[p].swap(tmp);
+        }
+  View pairs[3] = {{pairBuf[0], 64}, {pairBuf[1], 64}, {pairBuf[2], 64}};
+  for (int k = 0; k < 3; ++k) sumExpansions(per[2 * k], per[2 * k + 1], pairs[k]);
+  View four{fourBuf, 128}, all{allBuf, 192};
+  sumExpansions(pairs[0], pairs[1], four);
+  sumExpansions(four, pairs[2], all);
+  return expansionSign(all);
 }
 
 /// Exact sign of (bx − ax)(cy − ay) − (by − ay)(cx − ax) by expansion arithmetic: the
