@@ -86,7 +86,8 @@ template <class F>
 inline void twoProduct(F a, F b, F& x, F& y) {
   x = a * b;
   using L = std::numeric_limits<F>;
-  if constexpr (L::radix == 2 && L::digits > 53 && L::max_exponent > 2 * L::digits + 2) {
+  // (IEEE types only: a double-double long double has no correctly rounded product.)
+  if constexpr (L::is_iec559 && L::radix == 2 && L::digits > 53 && L::max_exponent > 2 * L::digits + 2) {
     constexpr F lo = powerOfTwo<F>(L::min_exponent / 2 + L::digits);
     constexpr F hi = powerOfTwo<F>(L::max_exponent / 2 - L::digits);
     constexpr F split = powerOfTwo<F>((L::digits + 1) / 2) + F(1);
