@@ -106,8 +106,9 @@ TEST(Interval, LongDoubleEnclosesDegreeNinePolynomials) {
     }
   }
   EXPECT_GT(decided, 1000);
-  if (std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits)
+  if (std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits) {
     EXPECT_GT(decidedOnlyByLongDouble, 50);  // where long double is wider, it decides more
+  }
 }
 
 // The product by the signs of the bounds (nine cases, four products only when both hold 0):
@@ -153,12 +154,18 @@ TEST(Interval, ProductOfEverySignPatternIsTheEndpointHull) {
     const double slack = std::ldexp(1.0, -51);
     ASSERT_LE(r.lo(), lo) << a0 << " " << a1 << " " << b0 << " " << b1;
     ASSERT_GE(r.hi(), hi) << a0 << " " << a1 << " " << b0 << " " << b1;
-    if (std::isfinite(lo)) ASSERT_GE(r.lo(), lo - std::abs(lo) * slack - 1e-300) << a0 << " " << a1 << " " << b0 << " " << b1;
-    if (std::isfinite(hi)) ASSERT_LE(r.hi(), hi + std::abs(hi) * slack + 1e-300) << a0 << " " << a1 << " " << b0 << " " << b1;
+    if (std::isfinite(lo)) {
+      ASSERT_GE(r.lo(), lo - std::abs(lo) * slack - 1e-300) << a0 << " " << a1 << " " << b0 << " " << b1;
+    }
+    if (std::isfinite(hi)) {
+      ASSERT_LE(r.hi(), hi + std::abs(hi) * slack + 1e-300) << a0 << " " << a1 << " " << b0 << " " << b1;
+    }
     // Points inside, multiplied exactly: inside the product.
     if (std::isfinite(a0) && std::isfinite(a1) && std::isfinite(b0) && std::isfinite(b1)) {
       const double x = a0 + (a1 - a0) * unit(rng), y = b0 + (b1 - b0) * unit(rng);
-      if (x >= a0 && x <= a1 && y >= b0 && y <= b1) ASSERT_TRUE(encloses(r, Q(x) * Q(y))) << x << " " << y;
+      if (x >= a0 && x <= a1 && y >= b0 && y <= b1) {
+        ASSERT_TRUE(encloses(r, Q(x) * Q(y))) << x << " " << y;
+      }
     }
   }
   for (auto& row : cases)

@@ -417,7 +417,9 @@ TEST(ContinuousPenetrationDepth, ConeSlidingInAnArmOfTheAxesNeedsOneBallPerFrame
     const mink::CpdResult<double> r = cpd.query(I, pose(rotation(0.01 * f, V(0.2, 0.3, 1)) * R0, t0 + f * V(-0.03, 0, 0)));
     ASSERT_EQ(r.status, CpdStatus::Penetrating) << "frame " << f;
     expectPhongCondition(r);
-    if (f > 0) EXPECT_EQ(r.iterations, 1) << "frame " << f;
+    if (f > 0) {
+      EXPECT_EQ(r.iterations, 1) << "frame " << f;
+    }
   }
 }
 

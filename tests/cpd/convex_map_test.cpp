@@ -131,7 +131,9 @@ TEST(ConvexMap, EveryHintLocatesACellThatHoldsTheDirection) {
       for (double r = 1e-6; r < 0.2; r *= 10)
         for (int k = 0; k < 8; ++k) dirs.push_back((a + r * V(N(rng), N(rng), N(rng)).normalized()).normalized());
     }
-    if (s.name == "fuzz torus 6x4") EXPECT_GT(tiny, 0) << "the torus no longer makes tiny cells: the test lost its case";
+    if (s.name == "fuzz torus 6x4") {
+      EXPECT_GT(tiny, 0) << "the torus no longer makes tiny cells: the test lost its case";
+    }
     int wrong = 0;
     for (int hint = 0; hint < H.numFaces(); ++hint)
       for (const V& d : dirs) {
