@@ -61,11 +61,7 @@ inline void twoSum(F a, F b, F& x, F& y) {
   y = (a - av) + (b - bv);
 }
 
-// x + y == a * b exactly: by fma, or, for a type wider than double (long double, which
-// the exact stage uses for the range), by Dekker's product of Veltkamp halves where both
-// factors are far enough inside the exponent range for every partial product to be exact
-// (within 2^±(emax/2 − digits)): glibc's fmal is software, with floating-point environment
-// calls that took half the time of inputs decided in long double.
+// 2^e, exactly, at compile time.
 template <class F>
 constexpr F powerOfTwo(int e) {
   F r = 1;
@@ -82,6 +78,11 @@ template <class F>
   return std::fma(a, b, -x);
 }
 
+// x + y == a * b exactly: by fma, or, for a type wider than double (long double, which
+// the exact stage uses for the range), by Dekker's product of Veltkamp halves where both
+// factors are far enough inside the exponent range for every partial product to be exact
+// (within 2^±(emax/2 − digits)): glibc's fmal is software, with floating-point environment
+// calls that took half the time of inputs decided in long double.
 template <class F>
 inline void twoProduct(F a, F b, F& x, F& y) {
   x = a * b;
