@@ -13,6 +13,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
+
 namespace {
 
 using mink::detail::Expansion;
@@ -179,6 +183,62 @@ TEST(Interval, NeverDecidesAnExactZero) {
   EXPECT_FALSE(zero.excludesZero());
   EXPECT_EQ(zero.certainSign(), 0);
 }
+
+// Exact zeros stay exact: x − x and products with a zero factor are the point 0, not
+// ±(least normal), so that the planes of axis-aligned meshes (normals and coordinates
+// with zeros, in double and in long double) never carry a bound whose products are
+// denormal (a microcode assist each on x86). The same enclosure holds: a zero that is
+// not exact (an underflowed product) is still widened.
+template <class F>
+void expectExactZerosStayExact() {
+  using I = mink::detail::IntervalOf<F>;
+  auto isPointZero = [](const I& x) { return x.lo() == F(0) && x.hi() == F(0); };
+  auto noDenormalBound = [](const I& x) {
+    return std::fpclassify(x.lo()) != FP_SUBNORMAL && std::fpclassify(x.hi()) != FP_SUBNORMAL;
+  };
+  const I x(F(0.3)), y(F(-0.7)), z(F(0.1)), zero(F(0));
+  EXPECT_TRUE(isPointZero(x - x));
+  EXPECT_TRUE(isPointZero(x + (-x)));
+  EXPECT_TRUE(isPointZero(zero * y));
+  EXPECT_TRUE(isPointZero((x - x) * y));
+  EXPECT_TRUE(isPointZero(zero + zero));
+  // A cross product of axis-aligned edges, its components dotted with a point: where the
+  // widened zeros met numbers below 1, every bound of the chain was denormal.
+  const I d1[3] = {x - x, y - z, zero}, d2[3] = {z, zero, x - x};
+  const I c[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
+  for (const I& ci : c) EXPECT_TRUE(noDenormalBound(ci * z * z));
+  EXPECT_TRUE(isPointZero(c[0]));
+  EXPECT_TRUE(isPointZero(c[1]));
+  // Underflow is not exact: a product of two tiny numbers rounded to 0 is still widened.
+  const F tiny = std::numeric_limits<F>::min();
+  const I under = I(tiny) * I(tiny);
+  EXPECT_LT(under.lo(), F(0));
+  EXPECT_GT(under.hi(), F(0));
+  // Nor is a sum that is 0 only because its operands are not opposite: none is, with
+  // gradual underflow; x − y for x != y is never 0 then, so the test is of the rule's form.
+  const I near = I(F(1.5) * tiny) - I(tiny);
+  EXPECT_GT(near.hi(), F(0));
+}
+
+TEST(Interval, ExactZerosStayExact) {
+  expectExactZerosStayExact<double>();
+  expectExactZerosStayExact<long double>();
+}
+
+#if defined(__SSE2__)
+// With flush-to-zero on (engines set it for speed), a difference of two different
+// numbers can come out 0: that zero is not exact, and the interval still holds the value.
+TEST(Interval, FlushToZeroDifferenceIsNotTakenForAnExactZero) {
+  const unsigned saved = _MM_GET_FLUSH_ZERO_MODE();
+  _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+  volatile double a = 1.5 * std::numeric_limits<double>::min(), b = std::numeric_limits<double>::min();
+  const Interval d = Interval(a) - Interval(b), s = Interval(a) + Interval(-b);
+  _MM_SET_FLUSH_ZERO_MODE(saved);
+  const Q exact = Q(1.5 * std::numeric_limits<double>::min()) - Q(std::numeric_limits<double>::min());
+  EXPECT_TRUE(encloses(d, exact));
+  EXPECT_TRUE(encloses(s, exact));
+}
+#endif
 
 // exactValue: the compressed expansion, summed in Q, equals the value of the same
 // polynomial evaluated in Q; its sign is the expansion's.
