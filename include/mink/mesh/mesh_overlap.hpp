@@ -130,8 +130,10 @@ class MeshOverlap {
     R_ = rotation;
     t_ = translation;
     for (std::size_t v = 0; v < bPoints_.size(); ++v) bPoints_[v] = R_ * B_.vertex(static_cast<int>(v)) + t_;
-    const SphereTree<T>& tree = B_.sphereTree();
-    for (int n = 0; n < tree.numNodes(); ++n) bCentres_[n] = R_ * tree.centre(n) + t_;
+    // B's sphere centres: every sphere test of exact T; for floating T only a point
+    // location in B (A inside B, rare), so placed there, on first use (placeCentres).
+    bCentresPlaced_ = false;
+    if constexpr (ScalarTraits<T>::isExact) placeCentres();
     for (std::size_t c = 0; c < bComponentLo_.size(); ++c) {
       bComponentLo_[c] = bComponentHi_[c] = bPoints_[bComponentVertex_[c]];
     }
@@ -454,6 +456,14 @@ class MeshOverlap {
     return true;
   }
 
+  // bCentres_ := B's sphere centres as placed (once per placement).
+  void placeCentres() {
+    if (bCentresPlaced_) return;
+    const SphereTree<T>& tree = B_.sphereTree();
+    for (int n = 0; n < tree.numNodes(); ++n) bCentres_[n] = R_ * tree.centre(n) + t_;
+    bCentresPlaced_ = true;
+  }
+
   // Step 4 of the header comment. A point of a surface that meets no boundary of the other
   // solid is not on it, so OnBoundary cannot come back; it would count as overlap.
   void containment() {
@@ -469,6 +479,7 @@ class MeshOverlap {
         return;
       }
     }
+    placeCentres();
     const PlacedB viewB{*this};
     const Vec3<T> lo = viewB.boxLo(), hi = viewB.boxHi();
     for (std::size_t c = 0; c < aComponentVertex_.size(); ++c) {
@@ -487,6 +498,7 @@ class MeshOverlap {
   Mat3<T> R_ = Mat3<T>::Identity();
   Vec3<T> t_ = Vec3<T>::Zero(), y_ = Vec3<T>::Zero();
   std::vector<Vec3<T>> bPoints_, bCentres_;
+  bool bCentresPlaced_ = false;
   std::vector<int> aComponentVertex_, bComponentVertex_, bComponentOf_;
   std::vector<Vec3<T>> aComponentLo_, aComponentHi_, bComponentLo_, bComponentHi_;
   Vec3<T> bLo_ = Vec3<T>::Zero(), bHi_ = Vec3<T>::Zero();
