@@ -161,10 +161,9 @@ class PenetrationSearch {
     RA_ = poseA.rotation;
     // The relative placement is checked too: two rotations each within the tolerance can
     // compose to one just outside it.
-    if (Error e = overlap_.trySetPlacement(RA_.transpose() * poseB.rotation,
-                                           RA_.transpose() * (poseB.translation - poseA.translation)))
-      return invalidInput(e);
-    if (!overlap_.overlaps()) {
+    Result<MeshOverlap<T>*> placed = overlapFor(poseA, poseB);
+    if (!placed.ok()) return invalidInput(placed.error());
+    if (!placed.value()->overlaps()) {
       hasLast_ = false;
       return res;
     }
@@ -180,7 +179,7 @@ class PenetrationSearch {
       q = last_;
       res.fromPreviousFrame = true;
     } else {
-      q = firstExit(cA - cB, reach);
+      q = firstExit(*placed.value(), cA - cB, reach);
       Candidate nearest;
       switch (nearestOfBoundary(poseA, poseB, q, res, nearest)) {
         case Nearest::Touching:
@@ -213,7 +212,10 @@ class PenetrationSearch {
         // The previous frame's q may now lie deep inside M (or far outside): start afresh.
         if (res.fromPreviousFrame && it == 0) {
           res.fromPreviousFrame = false;
-          q = firstExit(cA - cB, reach);
+          // Placed again: this query's updates may have changed the sum's units.
+          placed = overlapFor(poseA, poseB);
+          if (!placed.ok()) return invalidInput(placed.error());
+          q = firstExit(*placed.value(), cA - cB, reach);
           r = radiusAround(q);
           rCap = std::min(rMax, options_.maxRadiusFactor * q.stableNorm());
         } else {
@@ -323,7 +325,18 @@ class PenetrationSearch {
   /// The shortest first exit of o from M along the start directions (world frame): for
   /// each, bisection between 0 (B overlaps A) and a translation that clears the shapes'
   /// bounding spheres; the end that does not overlap is returned.
-  Vec3<T> firstExit(const Vec3<T>& between, const T& reach) {
+  // B placed for this query in the local sum's collision test (one placement for both)
+  // when the sum works in the meshes' own units, else in this object's own.
+  Result<MeshOverlap<T>*> overlapFor(const Pose<T>& poseA, const Pose<T>& poseB) {
+    Result<MeshOverlap<T>*> shared = sum_.overlapAt(poseA, poseB);
+    if (!shared.ok() || shared.value() != nullptr) return shared;
+    if (Error e = overlap_.trySetPlacement(RA_.transpose() * poseB.rotation,
+                                           RA_.transpose() * (poseB.translation - poseA.translation)))
+      return e;
+    return &overlap_;
+  }
+
+  Vec3<T> firstExit(MeshOverlap<T>& overlap, const Vec3<T>& between, const T& reach) {
     // The line between the centres first (often the shortest), then the 26 directions
     // to the faces, edges and corners of a cube: ±x, ±y, ±z alone miss the free cavity of
     // two linked tori, whose nearest exits lie between the axes.
@@ -340,14 +353,14 @@ class PenetrationSearch {
     for (int k = 0; k < n; ++k) {
       const Vec3<T> dA = RA_.transpose() * dirs[static_cast<std::size_t>(k)];  // in A's frame
       T lo = T(0), hi = std::min(bestT, reach * T(1.0625));
-      if (overlap_.overlaps(Vec3<T>(hi * dA))) continue;  // no shorter than the best so far
+      if (overlap.overlaps(Vec3<T>(hi * dA))) continue;  // no shorter than the best so far
       // The first exit, not just any: M is not convex along the ray (a linked pair of
       // tori leaves a free cavity near o inside an overlapping shell), so the free end
       // is first brought down by halves, from 2^-16 of it up, before the bisection.
       for (int h = kExitLadder; h >= 1; --h) {
         const T t = std::ldexp(hi, -h);
         if (!(t > lo)) continue;
-        if (overlap_.overlaps(Vec3<T>(t * dA))) {
+        if (overlap.overlaps(Vec3<T>(t * dA))) {
           lo = t;
         } else {
           hi = t;
@@ -357,7 +370,7 @@ class PenetrationSearch {
       for (int s = 0; s < options_.exitBisectionSteps; ++s) {
         const T mid = (lo + hi) / T(2);
         if (!(mid > lo && mid < hi)) break;
-        if (overlap_.overlaps(Vec3<T>(mid * dA)))
+        if (overlap.overlaps(Vec3<T>(mid * dA)))
           lo = mid;
         else
           hi = mid;

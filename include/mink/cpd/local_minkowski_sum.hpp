@@ -123,11 +123,10 @@ class LocalMinkowskiSum {
   Result<const MinkowskiPatch<T>*> tryUpdate(const Pose<T>& poseA, const Pose<T>& poseB, const Vec3<T>& centre,
                                              T radius) {
     if (Error e = checkUpdate(poseA, poseB, centre, radius)) return e;
-    // B in A's frame; M in A's frame is RA^T times M in the world frame (the translations
-    // cancel in a − b up to tB − tA).
-    const Mat3<T> RAt = poseA.rotation.transpose();
-    const Mat3<T> R = RAt * poseB.rotation;
-    Vec3<T> t = RAt * (poseB.translation - poseA.translation);
+    const Mat3<T> RAt = poseA.rotation.transpose();  // the ball into A's frame
+    Mat3<T> R;
+    Vec3<T> t;
+    relativePlacement(poseA, poseB, R, t);
     region_.ball = true;
     region_.centre = RAt * centre;
     region_.radius = radius;
@@ -153,19 +152,7 @@ class LocalMinkowskiSum {
         return Error("LocalMinkowskiSum::update: the ball's centre or radius overflows in units of the "
                      "meshes' size (2^" + std::to_string(scaleExp_) + ")");
     }
-    // Placing B (its vertices mapped, the overlap test's box tree of B rebuilt) only when
-    // the relative pose moved: a query's successive balls share one.
-    if (!placed_ || !(R == placedR_) || !(t == placedT_)) {
-      // Two rotations each within the tolerance can compose to one just outside it.
-      if (Error e = overlap_.trySetPlacement(R, t)) {
-        placed_ = false;
-        return e;
-      }
-      frame_.place(R, t);
-      placedR_ = R;
-      placedT_ = t;
-      placed_ = true;
-    }
+    if (Error e = place(R, t, true)) return e;
     region_.bounded = true;
     for (int a = 0; a < 3; ++a) {
       region_.lo[a] = region_.centre[a] - region_.radius;
@@ -198,6 +185,21 @@ class LocalMinkowskiSum {
     return *tryUpdate(poseA, poseB, centre, radius).value();
   }
 
+  /// The collision test of the meshes as given, B placed for (poseA, poseB) in A's frame as
+  /// update() places it, so that a caller's collision tests and the next update() at these
+  /// poses share one placement; nullptr while the work is in other units than the meshes'
+  /// (a ball far larger or smaller than them rescaled it: the caller places a MeshOverlap
+  /// of its own). The Error of a relative rotation that is not one. Floating-point T.
+  Result<MeshOverlap<T>*> overlapAt(const Pose<T>& poseA, const Pose<T>& poseB) {
+    static_assert(!ScalarTraits<T>::isExact, "LocalMinkowskiSum::overlapAt: floating-point T only");
+    if (scaleExp_ != 0) return static_cast<MeshOverlap<T>*>(nullptr);
+    Mat3<T> R;
+    Vec3<T> t;
+    relativePlacement(poseA, poseB, R, t);
+    if (Error e = place(R, t, false)) return e;
+    return &overlap_;
+  }
+
   /// The last patch.
   const MinkowskiPatch<T>& patch() const { return patch_; }
 
@@ -209,6 +211,36 @@ class LocalMinkowskiSum {
   long long convexMapFallbacks() const { return mapFallbacks_; }
 
  private:
+  // B in A's frame; M in A's frame is RA^T times M in the world frame (the translations
+  // cancel in a − b up to tB − tA). Unscaled.
+  static void relativePlacement(const Pose<T>& poseA, const Pose<T>& poseB, Mat3<T>& R, Vec3<T>& t) {
+    const Mat3<T> RAt = poseA.rotation.transpose();
+    R = RAt * poseB.rotation;
+    t = RAt * (poseB.translation - poseA.translation);
+  }
+
+  // Places B (its vertices mapped, the overlap test's box tree of B refit) only when the
+  // relative pose moved: a query's successive balls and its caller's collision tests
+  // (overlapAt) share one; the convolution frame too when `frameToo` (update()).
+  [[nodiscard]] Error place(const Mat3<T>& R, const Vec3<T>& t, bool frameToo) {
+    if (!placed_ || !(R == placedR_) || !(t == placedT_)) {
+      // Two rotations each within the tolerance can compose to one just outside it.
+      if (Error e = overlap_.trySetPlacement(R, t)) {
+        placed_ = false;
+        return e;
+      }
+      placedR_ = R;
+      placedT_ = t;
+      placed_ = true;
+      framePlaced_ = false;
+    }
+    if (frameToo && !framePlaced_) {
+      frame_.place(R, t);
+      framePlaced_ = true;
+    }
+    return Error();
+  }
+
   /// facets_ := the compatible pairs whose facet meets the region box, sorted.
   void gather() {
     facets_.clear();
@@ -501,8 +533,9 @@ class LocalMinkowskiSum {
   LocalMinkowskiSumOptions<T> options_;
   ConvolutionFrame<T> frame_;
   MeshOverlap<T> overlap_;
-  // The relative pose frame_ and overlap_ were last placed at (in the working units).
-  bool placed_ = false;
+  // The relative pose overlap_ (and frame_, when framePlaced_) were last placed at (in the
+  // working units).
+  bool placed_ = false, framePlaced_ = false;
   Mat3<T> placedR_ = Mat3<T>::Identity();
   Vec3<T> placedT_ = Vec3<T>::Zero();
   typename detail::Trimmer<T>::Region region_;
