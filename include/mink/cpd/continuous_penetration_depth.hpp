@@ -322,9 +322,6 @@ class PenetrationSearch {
     return std::max(options_.alpha * q.stableNorm(), std::numeric_limits<T>::min());
   }
 
-  /// The shortest first exit of o from M along the start directions (world frame): for
-  /// each, bisection between 0 (B overlaps A) and a translation that clears the shapes'
-  /// bounding spheres; the end that does not overlap is returned.
   // B placed for this query in the local sum's collision test (one placement for both)
   // when the sum works in the meshes' own units, else in this object's own.
   Result<MeshOverlap<T>*> overlapFor(const Pose<T>& poseA, const Pose<T>& poseB) {
@@ -336,6 +333,9 @@ class PenetrationSearch {
     return &overlap_;
   }
 
+  /// The shortest first exit of o from M along the start directions (world frame): for
+  /// each, bisection between 0 (B overlaps A) and a translation that clears the shapes'
+  /// bounding spheres; the end that does not overlap is returned.
   Vec3<T> firstExit(MeshOverlap<T>& overlap, const Vec3<T>& between, const T& reach) {
     // The line between the centres first (often the shortest), then the 26 directions
     // to the faces, edges and corners of a cube: ±x, ±y, ±z alone miss the free cavity of
