@@ -240,6 +240,78 @@ TEST(Interval, FlushToZeroDifferenceIsNotTakenForAnExactZero) {
 }
 #endif
 
+// dotSignByRadius (the trimming's first filter) claims a sign only where every choice of
+// values in the intervals has it: Σ a_i b_i is multilinear, so its extremes over the box
+// of intervals are at the box's corners, each checked in Q. Inputs: narrow intervals (the
+// filter's use) and points, over the whole range (denormal to huge), half of them made to
+// cancel to within a few ulps; with flush-to-zero on as well as off (SSE2). The filter
+// must also decide: most clear cases, and never an exact zero.
+void expectDotSignByRadiusIsSound(bool flushToZero) {
+  using mink::detail::dotSignByRadius;
+  std::mt19937 rng(flushToZero ? 29 : 23);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int claimed = 0, clear = 0, clearClaimed = 0;
+  for (int trial = 0; trial < 1500; ++trial) {
+    const int n = 1 + trial % 4;
+    const int scale = trial % 5 == 0 ? static_cast<int>(rng() % 2000) - 1000 : static_cast<int>(rng() % 60) - 30;
+    double m[8];
+    for (int i = 0; i < 2 * n; ++i) m[i] = trial % 7 == 0 ? randomNumber(rng) : std::ldexp(unit(rng), scale);
+    const bool cancel = trial % 2 == 1 && n > 1;
+    if (cancel) {  // the last product cancels the others to within a few ulps
+      double rest = 0;
+      for (int i = 0; i + 1 < n; ++i) rest += m[i] * m[n + i];
+      if (m[n - 1] != 0) m[2 * n - 1] = -rest / m[n - 1] * (1 + std::ldexp(double(rng() % 9) - 4, -52));
+    }
+    Interval a[4], b[4];
+    for (int i = 0; i < n; ++i) {
+      const int wa = static_cast<int>(rng() % 60), wb = static_cast<int>(rng() % 60);
+      const double da = wa < 8 ? 0 : std::abs(m[i]) * std::ldexp(unit(rng), -wa);
+      const double db = wb < 8 ? 0 : std::abs(m[n + i]) * std::ldexp(unit(rng), -wb);
+      a[i] = Interval(std::min(m[i], m[i] + da), std::max(m[i], m[i] + da));
+      b[i] = Interval(std::min(m[n + i], m[n + i] - db), std::max(m[n + i], m[n + i] - db));
+    }
+    bool finite = true;
+    for (int i = 0; i < n; ++i)
+      finite = finite && std::isfinite(a[i].lo()) && std::isfinite(a[i].hi()) && std::isfinite(b[i].lo()) && std::isfinite(b[i].hi());
+    if (!finite) continue;  // (the rational reference takes finite numbers)
+#if defined(__SSE2__)
+    const unsigned saved = _MM_GET_FLUSH_ZERO_MODE();
+    if (flushToZero) _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+#endif
+    const int s = dotSignByRadius(a, b, n);
+#if defined(__SSE2__)
+    _MM_SET_FLUSH_ZERO_MODE(saved);
+#endif
+    int lo = 2, hi = -2;  // the least and greatest sign over the corners
+    for (int c = 0; c < (1 << (2 * n)); ++c) {
+      Q v(0);
+      for (int i = 0; i < n; ++i)
+        v += Q((c >> i) & 1 ? a[i].hi() : a[i].lo()) * Q((c >> (n + i)) & 1 ? b[i].hi() : b[i].lo());
+      lo = std::min(lo, static_cast<int>(CGAL::sign(v)));
+      hi = std::max(hi, static_cast<int>(CGAL::sign(v)));
+    }
+    if (s != 0) {
+      ++claimed;
+      ASSERT_TRUE(lo == s && hi == s) << "trial " << trial << ": claimed " << s << ", corners " << lo << " .. " << hi;
+    }
+    if (!cancel && lo == hi && lo != 0 && trial % 7 != 0) {
+      ++clear;
+      clearClaimed += s != 0;
+    }
+  }
+  EXPECT_GT(claimed, 300);
+  EXPECT_GT(clearClaimed, clear * 4 / 5) << clearClaimed << " of " << clear << " clear cases decided";
+  const Interval z[2] = {Interval(0.1), Interval(0.3)}, w[2] = {Interval(0.3), Interval(-0.1)};
+  EXPECT_EQ(dotSignByRadius(z, w, 2), 0);  // 0.1 · 0.3 − 0.3 · 0.1 = 0 exactly
+}
+
+TEST(Interval, DotSignByRadiusIsTheSignAtEveryCorner) {
+  expectDotSignByRadiusIsSound(false);
+#if defined(__SSE2__)
+  expectDotSignByRadiusIsSound(true);
+#endif
+}
+
 // exactValue: the compressed expansion, summed in Q, equals the value of the same
 // polynomial evaluated in Q; its sign is the expansion's.
 TEST(Expansion, ExactValueMatchesRationalArithmetic) {

@@ -225,6 +225,46 @@ class IntervalOf {
 };
 using Interval = IntervalOf<double>;
 
+/// An interval as its rounded midpoint m and a radius r with r·(1 + 3·eps) >= the distance
+/// of any of its values from m: half the rounded width, plus eps·|m| for the midpoint's
+/// rounding, plus 4·(least normal number) for underflow, flushed to zero or not (for
+/// dotSignByRadius).
+template <class F>
+void toMidRadius(const IntervalOf<F>& x, F& m, F& r) {
+  m = F(0.5) * x.lo() + F(0.5) * x.hi();
+  r = (x.hi() - x.lo()) * F(0.5) + std::numeric_limits<F>::epsilon() * std::abs(m) + F(4) * std::numeric_limits<F>::min();
+}
+
+/// The sign of Σ a_i · b_i (i < n) for every a_i within ra_i of ma_i and b_i within rb_i
+/// of mb_i (toMidRadius), or 0 when this bound cannot tell: a cheaper first filter in
+/// front of interval arithmetic for narrow intervals, without branches (the interval
+/// product picks its bounds by their signs, and mispredicts where they vary). The value
+/// is Σ ma mb within Σ |ma| rb + ra (|mb| + rb), the rounded sum within (n + 1)·eps·
+/// Σ |ma mb| of that; both bounds are enlarged by a relative (4n + 16)·eps and an
+/// absolute (4n + 8)·(least normal) for their own rounding and underflow. An exact zero
+/// is never certified (the bound is > 0); an infinite or NaN input gives 0.
+template <class F>
+int dotSignByRadius(const F* ma, const F* ra, const F* mb, const F* rb, int n) {
+  constexpr F kEps = std::numeric_limits<F>::epsilon(), kTiny = std::numeric_limits<F>::min();
+  F v = F(0), s = F(0), e = F(0);
+  for (int i = 0; i < n; ++i) {
+    const F p = ma[i] * mb[i];
+    v += p;
+    s += std::abs(p);
+    e += std::abs(ma[i]) * rb[i] + ra[i] * (std::abs(mb[i]) + rb[i]);
+  }
+  const F bound = (e + F(n + 1) * kEps * s) * (F(1) + F(4 * n + 16) * kEps) + F(4 * n + 8) * kTiny;
+  return v > bound ? 1 : (v < -bound ? -1 : 0);
+}
+
+/// dotSignByRadius of intervals (n <= 4).
+template <class F>
+int dotSignByRadius(const IntervalOf<F>* a, const IntervalOf<F>* b, int n) {
+  F ma[4], ra[4], mb[4], rb[4];
+  for (int i = 0; i < n; ++i) toMidRadius(a[i], ma[i], ra[i]), toMidRadius(b[i], mb[i], rb[i]);
+  return dotSignByRadius(ma, ra, mb, rb, n);
+}
+
 /// An exact sum of non-overlapping numbers of F (double or long double; increasing
 /// magnitude, no zeros).
 template <class F>

@@ -318,17 +318,28 @@ void Trimmer<T>::planeCached(std::uint64_t l, const N*& n, const N*& k, N boxN[3
 }
 
 template <class T>
-void Trimmer<T>::planeIV(std::uint64_t l, const IV*& n, const IV*& k) const {
+void Trimmer<T>::planeIV(std::uint64_t l, const IV*& n, const IV*& k, const FloatOf** mr) const {
+  PlaneIVCache* c;
   if (TrimLabel::isPlane(l)) {
     IV unusedN[3], unusedK;
     planeCached<IV>(l, n, k, unusedN, unusedK);
-    return;
+    c = &planeCache_[static_cast<std::size_t>(TrimLabel::index(l))];
+  } else {
+    c = &boxCache_[TrimLabel::index(l)];
+    if (!c->ready) {
+      planeN<IV>(l, c->n, c->k);
+      c->ready = true;
+      c->mr[4] = FloatOf(0);
+    }
+    n = c->n;
+    k = &c->k;
   }
-  const int b = TrimLabel::index(l);
-  PlaneIVCache& c = boxCache_[b];
-  planeN<IV>(l, c.n, c.k);
-  n = c.n;
-  k = &c.k;
+  if (mr == nullptr) return;
+  if (c->mr[4] == FloatOf(0)) {  // a radius is > 0 once made
+    for (int a = 0; a < 3; ++a) toMidRadius(c->n[a], c->mr[a], c->mr[a + 4]);
+    toMidRadius(c->k, c->mr[3], c->mr[7]);
+  }
+  *mr = c->mr;
 }
 
 template <class T>
@@ -365,6 +376,28 @@ N Trimmer<T>::cutValue(int F, std::uint64_t cut, const N X[3], const N& W) const
 template <class T>
 int Trimmer<T>::filteredSide(int F, int id, std::uint64_t cut) const {
   const Homog& h = hbox_[static_cast<std::size_t>(id)];
+  if (h.boxed && !TrimLabel::isEdge(cut)) {
+    // A plane or box face: n · x − k by midpoints and radii first (dotSignByRadius).
+    const IV *n, *k;
+    const FloatOf* mr;
+    planeIV(cut, n, k, &mr);
+    const int sv = dotSignByRadius(mr, mr + 4, h.mr, h.mr + 4, 4);
+    if (sv != 0) return TrimLabel::isBox(cut) && TrimLabel::index(cut) % 2 == 0 ? -sv : sv;
+  } else if (h.boxed) {
+    // An edge line u v: d_i r_j − d_j r_i (cutValue) with d = v − u, r = x − u, the same way.
+    const Soup& f = soup_[static_cast<std::size_t>(F)];
+    const Vec3<T>&u = mCoord_[static_cast<std::size_t>(TrimLabel::edgeFirst(cut))],
+                  &v = mCoord_[static_cast<std::size_t>(TrimLabel::edgeSecond(cut))];
+    const int i = (f.axis + 1) % 3, j = (f.axis + 2) % 3;
+    constexpr FloatOf kEps = std::numeric_limits<FloatOf>::epsilon(), kTiny = FloatOf(4) * std::numeric_limits<FloatOf>::min();
+    FloatOf a[4], b[4];  // midpoints a[0..1], b[0..1]; radii a[2..3], b[2..3]
+    a[0] = FloatOf(v[i]) - FloatOf(u[i]), a[1] = FloatOf(u[j]) - FloatOf(v[j]);
+    b[0] = h.mr[j] - FloatOf(u[j]), b[1] = h.mr[i] - FloatOf(u[i]);
+    for (int c = 0; c < 2; ++c) a[c + 2] = kEps * std::abs(a[c]) + kTiny;
+    b[2] = h.mr[j + 4] + kEps * std::abs(b[0]) + kTiny, b[3] = h.mr[i + 4] + kEps * std::abs(b[1]) + kTiny;
+    const int sv = dotSignByRadius(a, a + 2, b, b + 2, 2);
+    if (sv != 0) return f.axisSign > 0 ? sv : -sv;
+  }
   if (h.boxed) {
     const IV one(FloatOf(1));
     const int sv = cutValue<IV>(F, cut, h.x, one).certainSign();

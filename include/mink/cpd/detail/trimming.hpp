@@ -108,6 +108,7 @@ class Trimmer {
     IV W = IV(FloatOf(1));
     IV x[3];             // X / W: an enclosure of the corner itself
     bool boxed = false;  // x is finite (W excludes 0)
+    FloatOf mr[8] = {};  // boxed: (x, −1) as midpoints mr[0..3] and radii mr[4..7] (dotSignByRadius)
   };
 
   /// Where the pieces are wanted: a box (pieces are clipped to it and all facets meeting it
@@ -258,7 +259,6 @@ class Trimmer {
   /// configuration) joins nothing: pieces that share only a point may differ.
   bool separated(int F, int G, std::uint64_t label, int a, int b) const;
 
-
   void reset() {
     mIndex_.clear();
     mPair_.clear();
@@ -275,6 +275,7 @@ class Trimmer {
     cornerXIndex_.clear();
     cornerXCount_ = 0;
     exactSide_.clear();
+    for (PlaneIVCache& c : boxCache_) c.ready = false;  // the region's faces: made again
     sameLine_.clear();
     sideCrossed_.clear();
     witnesses_.clear();
@@ -323,7 +324,9 @@ class Trimmer {
     for (int k = 0; k < 3 && h.boxed; ++k) {
       h.x[k] = h.X[k] / h.W;
       h.boxed = std::isfinite(h.x[k].lo()) && std::isfinite(h.x[k].hi());
+      toMidRadius(h.x[k], h.mr[k], h.mr[k + 4]);
     }
+    h.mr[3] = FloatOf(-1);
   }
   int pointCorner(int mid) { return corner(keyOf(static_cast<std::uint64_t>(mid))); }
 
@@ -410,8 +413,8 @@ class Trimmer {
   /// The corner named `key` as X / W.
   template <class N>
   void homogeneous(const TrimKey& key, N X[3], N& W) const;
-  /// planeN in interval arithmetic, cached per polygon (box faces are exact).
-  void planeIV(std::uint64_t l, const IV*& n, const IV*& k) const;
+  /// planeN in interval arithmetic, cached per polygon (box faces are exact); mr: as midpoints and radii.
+  void planeIV(std::uint64_t l, const IV*& n, const IV*& k, const FloatOf** mr = nullptr) const;
   /// planeN of label l: a polygon's from its cache (N: IV, IVL or EX), a box face's made
   /// in boxN, boxK.
   template <class N>
@@ -537,6 +540,7 @@ class Trimmer {
   struct PlaneCacheOf {
     N n[3], k;
     bool ready = false;
+    FloatOf mr[8] = {};  // N = IV: (n, k) as midpoints and radii, as Homog::mr (made on first use)
   };
   using PlaneIVCache = PlaneCacheOf<IV>;
   // Floating T: each polygon's plane in the number types of the predicates on corners,
