@@ -54,6 +54,15 @@ bool Trimmer<T>::sideCrossed(int F, int a, int b) const {
     if (crossed || G == F) return;
     const Soup& g = soup_[static_cast<std::size_t>(G)];
     const std::uint64_t plane = TrimLabel::plane(G);
+    // Off G's plane by the filter at either end: no exact test of the other (most sides
+    // near G have one end within the filter's width of its plane, the other clearly off).
+    if constexpr (!ScalarTraits<T>::isExact) {
+      const auto offByFilter = [&](int id) {
+        const TrimKey& k = keys_[static_cast<std::size_t>(id)];
+        return !k.isPoint() && !k.contains(plane) && filteredSide(F, id, plane) != 0;
+      };
+      if (offByFilter(a) || offByFilter(b)) return;
+    }
     if (side(F, a, plane) != 0 || side(F, b, plane) != 0) return;
     bool inF = true;
     for (int c = 0; c < g.nc && inF; ++c) inF = pointSide(soup_[static_cast<std::size_t>(F)], g.m[c]) == 0;
