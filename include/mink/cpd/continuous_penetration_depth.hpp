@@ -327,9 +327,10 @@ class PenetrationSearch {
   Result<MeshOverlap<T>*> overlapFor(const Pose<T>& poseA, const Pose<T>& poseB) {
     Result<MeshOverlap<T>*> shared = sum_.overlapAt(poseA, poseB);
     if (!shared.ok() || shared.value() != nullptr) return shared;
-    if (Error e = overlap_.trySetPlacement(RA_.transpose() * poseB.rotation,
-                                           RA_.transpose() * (poseB.translation - poseA.translation)))
-      return e;
+    Mat3<T> R;
+    Vec3<T> t;
+    LocalMinkowskiSum<T>::relativePlacement(poseA, poseB, R, t);
+    if (Error e = overlap_.trySetPlacement(R, t)) return e;
     return &overlap_;
   }
 

@@ -200,6 +200,14 @@ class LocalMinkowskiSum {
     return &overlap_;
   }
 
+  /// B's pose in A's frame (R, t); M in A's frame is RA^T times M in the world frame (the
+  /// translations cancel in a − b up to tB − tA). Unscaled.
+  static void relativePlacement(const Pose<T>& poseA, const Pose<T>& poseB, Mat3<T>& R, Vec3<T>& t) {
+    const Mat3<T> RAt = poseA.rotation.transpose();
+    R = RAt * poseB.rotation;
+    t = RAt * (poseB.translation - poseA.translation);
+  }
+
   /// The last patch.
   const MinkowskiPatch<T>& patch() const { return patch_; }
 
@@ -211,14 +219,6 @@ class LocalMinkowskiSum {
   long long convexMapFallbacks() const { return mapFallbacks_; }
 
  private:
-  // B in A's frame; M in A's frame is RA^T times M in the world frame (the translations
-  // cancel in a − b up to tB − tA). Unscaled.
-  static void relativePlacement(const Pose<T>& poseA, const Pose<T>& poseB, Mat3<T>& R, Vec3<T>& t) {
-    const Mat3<T> RAt = poseA.rotation.transpose();
-    R = RAt * poseB.rotation;
-    t = RAt * (poseB.translation - poseA.translation);
-  }
-
   // Places B (its vertices mapped, the overlap test's box tree of B refit) only when the
   // relative pose moved: a query's successive balls and its caller's collision tests
   // (overlapAt) share one; the convolution frame too when `frameToo` (update()).
