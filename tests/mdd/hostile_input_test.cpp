@@ -440,13 +440,19 @@ TEST(MddHostile, SheetThinAsRoundingIsCrossed) {
 // The fallbacks that visit every face of M (exhaustive check, chord) are quadratic in the
 // shapes' sizes; above MddOptions::maxExhaustivePairs a query that needs them reports
 // IterationLimit rather than running for minutes (two 100k-vertex shapes: 9e10 pairs).
-// The sheet above needs the fallback; with the cap below its 9 x 9 edge pairs it stops.
+// A sheet like the one above (five points within 1e-12 of x = -2, found by a random
+// search; the one above no longer needs the fallback since the exit portal's corners
+// name its EE face) needs it; with the cap below its 9 x 9 edge pairs it stops.
 TEST(MddHostile, FallbackOverTooManyEdgePairsGivesIterationLimit) {
-  const SheetScene sc;
-  const auto& P = sc.P;
-  const auto& pp = sc.pp;
-  const auto& pq = sc.pq;
-  const V& s = sc.s;
+  const auto P = ConvexPolyhedron<double>::fromPoints(
+      {V(-0x1.00000000002c4p+1, 0x1.4772f15935aap-2, 0x1.c9e21ff1edb7ep+0),
+       V(-0x1.0000000000373p+1, 0x1.de2ed1f35444p-1, -0x1.a0b08be8f81f2p-1),
+       V(-0x1.ffffffffff3bep+0, 0x1.254cdc407efep-4, 0x1.c2a21a43ecc92p+0),
+       V(-0x1.000000000002p+1, -0x1.1c1425c65b5bp+0, -0x1.5d80bdc5ed51p-3),
+       V(-0x1.000000000037ep+1, -0x1.b0f9c46eade6ep+0, 0x1.3780c02780486p+0)});
+  const Pose<double> pp = SheetScene::translated(V(-2, 0, -2));
+  const Pose<double> pq = SheetScene::translated(V(-0x1p+0, 0x1.f30868b2fcdb9p-1, -0x1.0bf15b0127068p+1));
+  const V s(0x1p+0, 0x1.494d97ca111p+0, 0x1.48203d12c2446p-5);
   const auto r = mink::mdd(P, pp, P, pq, s);
   ASSERT_TRUE(r.usedFallback);
   EXPECT_EQ(r.status, MddStatus::Separated);

@@ -3,9 +3,10 @@
 // section IV-B): the maximum of σ·N / (k − N·c) over the faces of M (Lemma 1).
 //
 //   1. A face kept from the last query of the pair, or the exit-portal estimate
-//      (detail/exit_portal.hpp): the FV / VF faces best aligned with its normal at its
-//      support vertices, and the EE faces of the edges whose arcs pass nearest it, are
-//      tried first; a supporting plane whose facet the line crosses is the exit.
+//      (detail/exit_portal.hpp): the EE face that a converged portal's corners name,
+//      then the FV / VF faces best aligned with its normal at its support vertices, and
+//      the EE faces of the edges whose arcs pass nearest it, are tried first; a
+//      supporting plane whose facet the line crosses is the exit.
 //   2. Else SEARCH-FV, SEARCH-VF, SEARCH-EE from those faces (detail/search_fv.hpp,
 //      detail/search_ee.hpp), the answer accepted by the facet check (facet_check.hpp).
 //   3. Else every face of M (exhaustive), within MddOptions::maxExhaustivePairs.
@@ -50,7 +51,8 @@ class ExitFaceSearch {
   /// soon as a face proves the origin outside M.
   ///
   /// Directional mode: the exit-portal estimate (exit_portal.hpp) names a normal close to
-  /// the exit facet's; the FV and VF faces best aligned with it at its support vertices,
+  /// the exit facet's (and, converged, corners on that facet: see tryAround); the FV and
+  /// VF faces best aligned with it at its support vertices,
   /// then the EE faces of the edges at those vertices, are tried first, and the first
   /// that passes the facet check is the answer (a supporting plane of M whose facet the
   /// line crosses is where the ray leaves M: no search can do better). Otherwise the
@@ -198,6 +200,20 @@ class ExitFaceSearch {
   /// is the first that the line crosses (faceHit), else invalid. False on the visit cap.
   bool tryAround(const ExitPortal<T>& est, const RayObjective<T>& obj, SearchBudget& budget, int& f0, int& g0,
                  MFace<T>& hit) {
+    // A converged portal's corners are points of the exit facet: two vertices of P and
+    // two of −Q among them name its EE face, tried first (certified as any other).
+    int ep = -1, eq = -1;
+    if (est.converged && cornerEdge(F_.P(), est.cornerP, ep) && cornerEdge(F_.Q(), est.cornerQ, eq)) {
+      if (!budget.take()) return false;
+      const MFace<T> m = F_.ee(ep, eq);
+      if (m.valid()) {
+        ++res_.visitedEE;
+        if (obj.num(m) > T(0) && check_.certifies(m)) {
+          hit = m;
+          return true;
+        }
+      }
+    }
     f0 = alignedFaceP(est.vertexP, est.normal);
     g0 = alignedFaceQ(est.vertexQ, est.normal);
     int hq = est.vertexQ, hp = est.vertexP;
@@ -225,6 +241,21 @@ class ExitFaceSearch {
     if (obj.num(bestEE) > T(0) && obj.better(bestEE, best) && check_.certifies(bestEE))
       hit = bestEE;
     return true;
+  }
+
+  /// The edge of X joining the two distinct vertices among v[0..2] (e), if there are
+  /// exactly two and they are adjacent.
+  static bool cornerEdge(const ConvexPolyhedron<T>& X, const int* v, int& e) {
+    int a = v[0], b = v[1] != a ? v[1] : v[2];
+    if (b == a || (v[2] != a && v[2] != b)) return false;
+    const auto nb = X.vertexNeighbors(a);
+    const auto he = X.vertexHalfEdges(a);
+    for (int i = 0; i < nb.size(); ++i)
+      if (nb[i] == b) {
+        e = X.heEdge(he[i]);
+        return true;
+      }
+    return false;
   }
 
   /// out := the edges of X at vertex v whose Gauss arcs pass nearest the direction n (X's

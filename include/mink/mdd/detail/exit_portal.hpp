@@ -46,6 +46,9 @@ struct ExitPortal {
   int steps = 0;
   /// True when the portal's plane was shown to support M (exact for exact T).
   bool converged = false;
+  /// Converged: the portal's corners, points of the exit facet as support vertex pairs
+  /// (P's, −Q's); ExitFaceSearch::tryAround names an EE face from them.
+  int cornerP[3] = {-1, -1, -1}, cornerQ[3] = {-1, -1, -1};
   /// Collision mode only: what the portal proved about the origin.
   enum class Verdict { Unknown, Inside, Outside } verdict = Verdict::Unknown;
 };
@@ -160,7 +163,11 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
     const Corner y = support(n, false);
     if (separates(n, y)) return finish(n, y, false);
     const bool known = (y.p == b1.p && y.q == b1.q) || (y.p == b2.p && y.q == b2.q) || (y.p == b3.p && y.q == b3.q);
-    if (known || !(n.dot(y.a - b1.a) > T(0))) return finish(n, y, true);
+    if (known || !(n.dot(y.a - b1.a) > T(0))) {
+      const Corner* bs[3] = {&b1, &b2, &b3};
+      for (int i = 0; i < 3; ++i) out.cornerP[i] = bs[i]->p, out.cornerQ[i] = bs[i]->q;
+      return finish(n, y, true);
+    }
     // The plane through the ray and y splits the portal; σ lies in the sub-cone on the
     // side where the signs of b_i·(σ × y) change (σ ∈ cone(b1, b2, y) iff b1·m ≥ 0 ≥ b2·m,
     // and cyclically).
