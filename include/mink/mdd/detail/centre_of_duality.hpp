@@ -48,22 +48,6 @@ struct CentreOfDuality {
 };
 
 
-template <class T>
-using Pt2 = std::pair<T, T>;
-
-template <class T>
-T cross2(const Pt2<T>& a, const Pt2<T>& b) {
-  return a.first * b.second - a.second * b.first;
-}
-template <class T>
-Pt2<T> sub2(const Pt2<T>& a, const Pt2<T>& b) {
-  return {a.first - b.first, a.second - b.second};
-}
-template <class T>
-T dot2(const Pt2<T>& a, const Pt2<T>& b) {
-  return a.first * b.first + a.second * b.second;
-}
-
 
 /// Step 1 for direction s (frame of P). hintP / hintQ: support vertex hints (in and out).
 template <class T>

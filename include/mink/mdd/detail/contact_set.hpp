@@ -44,6 +44,23 @@ bool supportSet(const ConvexPolyhedron<T>& X, int v0, const Value& value, const 
   return maximiser;
 }
 
+/// 2-D points and their (rounded) cross product, difference and dot product.
+template <class T>
+using Pt2 = std::pair<T, T>;
+
+template <class T>
+T cross2(const Pt2<T>& a, const Pt2<T>& b) {
+  return a.first * b.second - a.second * b.first;
+}
+template <class T>
+Pt2<T> sub2(const Pt2<T>& a, const Pt2<T>& b) {
+  return {a.first - b.first, a.second - b.second};
+}
+template <class T>
+T dot2(const Pt2<T>& a, const Pt2<T>& b) {
+  return a.first * b.first + a.second * b.second;
+}
+
 /// 2-D orientation sign of (a, b, c), exact on the coordinates given (orient2d: a
 /// floating-point filter, then expansion arithmetic).
 template <class T>

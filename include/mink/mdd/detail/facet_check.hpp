@@ -185,6 +185,7 @@ class FacetCheck {
         add(p1 - q0, 2);  // (1, 0)
         add(p1 - q1, 3);  // (1, 1)
         add(p0 - q1, 1);  // (0, 1)
+        if (insideParallelogram(p0, p1, q0, q1)) return true;
         break;
       }
       default:
@@ -193,6 +194,30 @@ class FacetCheck {
     OriginLocation<T> loc;
     if (!locateOriginConvex(cache_.points2, loc)) return false;
     setWitnesses(loc, placed);
+    return true;
+  }
+
+  /// EE face e_p − e_q (ends p0 p1 of P's edge, q0 q1 of Q's, P's frame), its corners in
+  /// points2 as faceHit puts them: true when the origin is strictly inside that
+  /// parallelogram by the exact signs of its four sides (the common case, where no fan
+  /// triangle needs locating), the witnesses then p0 + λ (p1 − p0) and q0 + μ (q1 − q0)
+  /// from the 2-D system (clamped to [0, 1]; mdd() solves the same in 3-D for an EE
+  /// answer). False otherwise: faceHit's general location decides.
+  bool insideParallelogram(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& q0, const Vec3<T>& q1) {
+    const auto& c = cache_.points2;
+    const std::pair<T, T> o(T(0), T(0));
+    const int s0 = orient2(c[0].first, c[1].first, o);
+    if (s0 == 0 || orient2(c[1].first, c[2].first, o) != s0 || orient2(c[2].first, c[3].first, o) != s0 ||
+        orient2(c[3].first, c[0].first, o) != s0)
+      return false;
+    // c0 + λ U + μ V = 0 with U = c1 − c0 (P's edge), V = c3 − c0 (Q's, reversed).
+    const std::pair<T, T> A = c[0].first, U = sub2(c[1].first, A), V = sub2(c[3].first, A);
+    const T den = cross2(U, V);
+    if (!(den != T(0))) return false;
+    const T lambda = std::min(T(1), std::max(T(0), T(cross2(V, A) / den)));
+    const T mu = std::min(T(1), std::max(T(0), T(cross2(A, U) / den)));
+    wP_ = p0 + lambda * (p1 - p0);
+    wQ_ = q0 + mu * (q1 - q0);
     return true;
   }
 
