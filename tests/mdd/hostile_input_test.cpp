@@ -746,4 +746,27 @@ TEST(MddHostile, InputChecksGiveTheMessagesThatAreThrown) {
   }
 }
 
+// Regression (fuzzer, fuzz/regressions/witnesses_of_the_nearer_exit_after_a_symmetric_chord):
+// P and Q the same six points (1e-6 across) at the same pose, so M is symmetric about the
+// origin and the line's chord [-1.1e-6, 1.1e-6] has two exits at the same distance. The
+// first exit answers (the tie goes to +s); its witnesses must be its own. A version that
+// kept the witnesses recorded with the first exit but left the facet check holding the
+// second exit's support sets corrected them against the wrong facet (7.4e-7 off the
+// motion, two thirds of the chord).
+TEST(MddHostile, TiedExitsKeepTheirOwnWitnesses) {
+  const std::vector<V> pts = {V(-0x1.418p-20, -0x1.71ep-19, -0x1.5e4p-20), V(0x1.38p-20, 0x1.7p-21, 0x1.a7cp-20),
+                              V(-0x1.08p-23, -0x1.bcp-24, 0x1.00ap-19),   V(0x1.f4p-22, 0x1.8ap-21, 0x1.4ep-23),
+                              V(0x1p-22, 0x1.704p-20, -0x1.3bap-19),       V(0x1p-22, 0x1p-29, 0x0p+0)};
+  mink::HullOptions<double> exact;
+  exact.tolerance = 0;
+  const auto P = ConvexPolyhedron<double>::fromPoints(pts, exact);
+  Pose<double> pose;
+  pose.translation = V(-2, -2, -2);
+  const V s(-2, 1, -2);
+  const auto r = mink::mdd(P, pose, P, pose, s);
+  ASSERT_EQ(r.status, MddStatus::Penetrating);
+  EXPECT_NEAR(std::abs(r.translation), 1.1001178821120588e-06, 1e-12);
+  EXPECT_LT((r.witnessP - r.witnessQ - r.parameter * s).norm(), 1e-12);
+}
+
 }  // namespace

@@ -122,8 +122,11 @@ class MddDriver {
       record(f2);
       return finish(t2);
     }
-    // f1 as recorded when it was found (its witnesses are those of the check that
-    // accepted it, as where the second exit is not needed).
+    // f1's witnesses were overwritten by the second facet check: recompute them.
+    // (f1 may have been accepted by its own polygon, faceHit, which the facet check with
+    // its support sets can then miss by rounding.)
+    if (!check_.facetHit(f1)) check_.faceHit(f1);
+    record(f1);
     return finish(t1);
   }
 
