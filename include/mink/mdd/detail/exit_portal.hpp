@@ -67,8 +67,9 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
   ExitPortal<T> out;
   // Discovery directions jump across the sphere: the hierarchy or a seeded hill-climb
   // (support_seeds.hpp). Refinement directions move less: on large shapes a climb from
-  // the last corner capped at defaults::kHierarchyClimbMoves, then the hierarchy; else a
-  // hill-climb from the portal corner furthest along the new direction.
+  // each shape's corner vertex furthest along the new direction, capped at
+  // defaults::kHierarchyClimbMoves, then the hierarchy; else a hill-climb from the portal
+  // corner furthest along the new direction.
   // Corners in units of 2^e for a scene far from unit order (exact; every test below is
   // homogeneous in them): products of two or three coordinates of 1e-224 underflow.
   const int e = F.unitScaleExponent();
@@ -87,6 +88,19 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
     return out;
   };
   const int cap = defaults::kMddExitPortalSteps;
+  const bool large = F.hasHierarchy();
+  auto climbFrom = [&](const Vec3<T>& n, const Corner& c1, const Corner& c2, const Corner& c3) {
+    const Vec3<T> nq = F.R().transpose() * n;  // n in Q's frame: −Q's best has the least nq·q
+    const Corner* cs[3] = {&c1, &c2, &c3};
+    T bestP = n.dot(F.P().vertex(c1.p)), bestQ = nq.dot(F.Q().vertex(c1.q));
+    hintP = c1.p;
+    hintQ = c1.q;
+    for (int i = 1; i < 3; ++i) {
+      const T hp = n.dot(F.P().vertex(cs[i]->p)), hq = nq.dot(F.Q().vertex(cs[i]->q));
+      if (hp > bestP) bestP = hp, hintP = cs[i]->p;
+      if (hq < bestQ) bestQ = hq, hintQ = cs[i]->q;
+    }
+  };
   // Collision mode: does the support point y along d put the origin outside M by more
   // than the tolerance? From the vertices themselves (y.a is relative to c and rounded).
   auto separates = [&](const Vec3<T>& d, const Corner& y) {
@@ -155,11 +169,17 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
       out.verdict = ExitPortal<T>::Verdict::Inside;
       return finish(n, b1, false);
     }
-    // Hill-climb from the corner furthest along n: the shortest climb.
-    const T h1 = n.dot(b1.a), h2 = n.dot(b2.a), h3 = n.dot(b3.a);
-    const Corner& from = h1 >= h2 ? (h1 >= h3 ? b1 : b3) : (h2 >= h3 ? b2 : b3);
-    hintP = from.p;
-    hintQ = from.q;
+    // Hill-climb from the corner furthest along n: the shortest climb. Where a shape has
+    // a hierarchy (a climb's step is a cache miss there, and a climb over the cap a
+    // descent) each shape climbs from its own vertex furthest along n of the three.
+    if (large) {
+      climbFrom(n, b1, b2, b3);
+    } else {
+      const T h1 = n.dot(b1.a), h2 = n.dot(b2.a), h3 = n.dot(b3.a);
+      const Corner& from = h1 >= h2 ? (h1 >= h3 ? b1 : b3) : (h2 >= h3 ? b2 : b3);
+      hintP = from.p;
+      hintQ = from.q;
+    }
     const Corner y = support(n, false);
     if (separates(n, y)) return finish(n, y, false);
     const bool known = (y.p == b1.p && y.q == b1.q) || (y.p == b2.p && y.q == b2.q) || (y.p == b3.p && y.q == b3.q);
