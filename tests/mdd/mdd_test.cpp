@@ -443,6 +443,49 @@ TEST(MddCoherence, LargeShapesWalkFromTheKeptFaces) {
   EXPECT_EQ(portalFrames, 0);
 }
 
+// Cold queries on shapes with hierarchies (the exit portal's descents, and refinement
+// climbs from each shape's own corner vertex): after the reported motion the shapes
+// touch (FCL's certified distance, or libccd's EPA depth where rounding makes them
+// overlap, ~0), and the answer is the one the hierarchy-free path (hill-climbs only) gives.
+TEST(MddLarge, ColdQueriesWithHierarchiesTouchAfterTheMotion) {
+  const auto ptsP = mink_test::paper_shapes_detail::fibonacciEllipsoid(2500, 2.0, 2.0, 5.0);
+  const auto ptsQ = mink_test::paper_shapes_detail::fibonacciEllipsoid(2000, 1.5, 2.5, 4.0);
+  const auto P = ConvexPolyhedron<double>::fromPoints(ptsP);
+  const auto Q = ConvexPolyhedron<double>::fromPoints(ptsQ);
+  ASSERT_NE(mink::hierarchyOf(P), nullptr);
+  ASSERT_NE(mink::hierarchyOf(Q), nullptr);
+  const mink_test::GjkShape gP(ptsP), gQ(ptsQ);
+  mink::MddOptions<double> climbsOnly;
+  climbsOnly.useHierarchy = false;
+  std::mt19937 rng(7);
+  int separated = 0, penetrating = 0;
+  double worst = 0.0;
+  for (int k = 0; k < 60; ++k) {
+    Pose<double> poseQ;
+    poseQ.rotation = mink_test::randomRotation(rng);
+    poseQ.translation = mink_test::randomUnitVector(rng) * mink_test::uniformIn(rng, 1.0, 12.0);
+    const Vec3d s = mink_test::randomUnitVector(rng);
+    const auto r = mink::mdd(P, Pose<double>(), Q, poseQ, s);
+    const auto r0 = mink::mdd(P, Pose<double>(), Q, poseQ, s, climbsOnly);
+    ASSERT_EQ(r.status, r0.status) << "k " << k;
+    if (r.status == MddStatus::NoContact) continue;
+    EXPECT_NEAR(r.translation, r0.translation, 1e-12 * (1.0 + std::abs(r0.translation))) << "k " << k;
+    separated += r.status == MddStatus::Separated;
+    penetrating += r.status == MddStatus::Penetrating;
+    Pose<double> moved = poseQ;
+    moved.translation += r.translation * s;
+    const auto c = mink_test::certifiedDistance(gP, Pose<double>(), gQ, moved);
+    const double dist =
+        c.distance > 0.0 ? c.distance : mink_test::ccdPenetrationEPA(gP, Pose<double>(), gQ, moved).depth;
+    worst = std::max(worst, dist);
+    EXPECT_LT(dist, 1e-6) << "k " << k;
+  }
+  std::printf("[large, cold] %d separated, %d penetrating; max distance after the motion %.3g\n", separated,
+              penetrating, worst);
+  EXPECT_GT(separated, 5);
+  EXPECT_GT(penetrating, 5);
+}
+
 // ---------------------------------------------------------------------------------------
 TEST(MddInput, RejectsBadDirectionAndPoses) {
   const auto box = ConvexPolyhedron<double>::fromPoints(boxPoints(1, 1, 1));
