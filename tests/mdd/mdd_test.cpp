@@ -171,6 +171,18 @@ TEST(MddPaper, ExactRationalBitForBit) {
   EXPECT_GT(checked, 50);
 }
 
+// How far from touching P (at the identity) Q is once moved by `motion` from poseQ: the
+// GJK distance (FCL, its nearest points certified by brute force, else libccd) when the
+// shapes are seen apart; when rounding makes them overlap, the penetration depth (libccd
+// GJK+EPA) instead. ~0 for a correct MDD answer.
+double distanceAfterMotion(const mink_test::GjkShape& gP, const mink_test::GjkShape& gQ, const Pose<double>& poseQ,
+                           const Vec3d& motion) {
+  Pose<double> moved = poseQ;
+  moved.translation += motion;
+  const auto c = mink_test::certifiedDistance(gP, Pose<double>(), gQ, moved);
+  return c.distance > 0.0 ? c.distance : mink_test::ccdPenetrationEPA(gP, Pose<double>(), gQ, moved).depth;
+}
+
 // The paper's verification: after moving Q by the reported motion, GJK (FCL) distance ~ 0.
 TEST(MddPaper, FclDistanceAfterMotionIsZero) {
   const unsigned seed = 99;
@@ -190,14 +202,7 @@ TEST(MddPaper, FclDistanceAfterMotionIsZero) {
       const Vec3d s = mink_test::randomUnitVector(rng);
       const auto r = mink::mdd(P, Pose<double>(), Q, poseQ, s);
       if (r.status == MddStatus::NoContact) continue;
-      Pose<double> moved = poseQ;
-      moved.translation += r.translation * s.normalized();
-      // Touching: the GJK distance (FCL, its nearest points certified by brute force, else
-      // libccd) is ~0 when the shapes are seen apart; when rounding makes them overlap, the
-      // penetration depth (libccd GJK+EPA) must be ~0 instead.
-      const auto c = mink_test::certifiedDistance(gP, Pose<double>(), gQ, moved);
-      const double dist =
-          c.distance > 0.0 ? c.distance : mink_test::ccdPenetrationEPA(gP, Pose<double>(), gQ, moved).depth;
+      const double dist = distanceAfterMotion(gP, gQ, poseQ, r.translation * s.normalized());
       worst = std::max(worst, dist);
       EXPECT_LT(dist, 1e-6) << "seed " << seed << " pair " << mink_test::paperShapeName(pair.first) << " k " << k;
       ++n;
@@ -472,11 +477,7 @@ TEST(MddLarge, ColdQueriesWithHierarchiesTouchAfterTheMotion) {
     EXPECT_NEAR(r.translation, r0.translation, 1e-12 * (1.0 + std::abs(r0.translation))) << "k " << k;
     separated += r.status == MddStatus::Separated;
     penetrating += r.status == MddStatus::Penetrating;
-    Pose<double> moved = poseQ;
-    moved.translation += r.translation * s;
-    const auto c = mink_test::certifiedDistance(gP, Pose<double>(), gQ, moved);
-    const double dist =
-        c.distance > 0.0 ? c.distance : mink_test::ccdPenetrationEPA(gP, Pose<double>(), gQ, moved).depth;
+    const double dist = distanceAfterMotion(gP, gQ, poseQ, r.translation * s);
     worst = std::max(worst, dist);
     EXPECT_LT(dist, 1e-6) << "k " << k;
   }
