@@ -448,10 +448,12 @@ TEST(MddCoherence, LargeShapesWalkFromTheKeptFaces) {
   EXPECT_EQ(portalFrames, 0);
 }
 
-// Cold queries on shapes with hierarchies (the exit portal's descents, and refinement
-// climbs from each shape's own corner vertex): after the reported motion the shapes
-// touch (FCL's certified distance, or libccd's EPA depth where rounding makes them
-// overlap, ~0), and the answer is the one the hierarchy-free path (hill-climbs only) gives.
+// Cold queries on shapes with hierarchies (the exit portal's descents, its secant steps
+// and the small portal re-opened around their vertex, refinement climbs from each shape's
+// own corner vertex): after the reported motion the shapes touch (FCL's certified
+// distance, or libccd's EPA depth where rounding makes them overlap, ~0), the answer is
+// the one the hierarchy-free path (hill-climbs only, no secant steps) gives, and float
+// agrees with double.
 TEST(MddLarge, ColdQueriesWithHierarchiesTouchAfterTheMotion) {
   const auto ptsP = mink_test::paper_shapes_detail::fibonacciEllipsoid(2500, 2.0, 2.0, 5.0);
   const auto ptsQ = mink_test::paper_shapes_detail::fibonacciEllipsoid(2000, 1.5, 2.5, 4.0);
@@ -460,11 +462,18 @@ TEST(MddLarge, ColdQueriesWithHierarchiesTouchAfterTheMotion) {
   ASSERT_NE(mink::hierarchyOf(P), nullptr);
   ASSERT_NE(mink::hierarchyOf(Q), nullptr);
   const mink_test::GjkShape gP(ptsP), gQ(ptsQ);
+  // The same shapes in float (their own hierarchies: the secant steps run in float too).
+  std::vector<mink::Vec3<float>> ptsPf, ptsQf;
+  for (const Vec3d& x : ptsP) ptsPf.push_back(x.cast<float>());
+  for (const Vec3d& x : ptsQ) ptsQf.push_back(x.cast<float>());
+  const auto Pf = ConvexPolyhedron<float>::fromPoints(ptsPf);
+  const auto Qf = ConvexPolyhedron<float>::fromPoints(ptsQf);
+  ASSERT_NE(mink::hierarchyOf(Pf), nullptr);
   mink::MddOptions<double> climbsOnly;
   climbsOnly.useHierarchy = false;
   std::mt19937 rng(7);
   int separated = 0, penetrating = 0;
-  double worst = 0.0;
+  double worst = 0.0, worstFloat = 0.0;
   for (int k = 0; k < 60; ++k) {
     Pose<double> poseQ;
     poseQ.rotation = mink_test::randomRotation(rng);
@@ -473,16 +482,24 @@ TEST(MddLarge, ColdQueriesWithHierarchiesTouchAfterTheMotion) {
     const auto r = mink::mdd(P, Pose<double>(), Q, poseQ, s);
     const auto r0 = mink::mdd(P, Pose<double>(), Q, poseQ, s, climbsOnly);
     ASSERT_EQ(r.status, r0.status) << "k " << k;
+    Pose<float> poseQf;
+    poseQf.rotation = Eigen::Quaternionf(poseQ.rotation.cast<float>()).normalized().toRotationMatrix();
+    poseQf.translation = poseQ.translation.cast<float>();
+    const auto rf = mink::mdd(Pf, Pose<float>(), Qf, poseQf, mink::Vec3<float>(s.cast<float>()));
+    EXPECT_EQ(rf.status == MddStatus::NoContact, r.status == MddStatus::NoContact) << "k " << k;
     if (r.status == MddStatus::NoContact) continue;
     EXPECT_NEAR(r.translation, r0.translation, 1e-12 * (1.0 + std::abs(r0.translation))) << "k " << k;
+    if (rf.status != MddStatus::NoContact) worstFloat = std::max(worstFloat, std::abs(rf.translation - r.translation));
     separated += r.status == MddStatus::Separated;
     penetrating += r.status == MddStatus::Penetrating;
     const double dist = distanceAfterMotion(gP, gQ, poseQ, r.translation * s);
     worst = std::max(worst, dist);
     EXPECT_LT(dist, 1e-6) << "k " << k;
   }
-  std::printf("[large, cold] %d separated, %d penetrating; max distance after the motion %.3g\n", separated,
-              penetrating, worst);
+  std::printf("[large, cold] %d separated, %d penetrating; max distance after the motion %.3g; float off double "
+              "by at most %.3g\n",
+              separated, penetrating, worst, worstFloat);
+  EXPECT_LT(worstFloat, 1e-4);  // float's rounding of a 5-unit scene, with room
   EXPECT_GT(separated, 5);
   EXPECT_GT(penetrating, 5);
 }

@@ -28,9 +28,13 @@
 // runs the paper's searches.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "mink/core/defaults.hpp"
 #include "mink/core/orientation.hpp"
 #include "mink/gauss_map/arc_intersection.hpp"  // det3
+#include "mink/mdd/detail/contact_set.hpp"       // orthogonalBasis
 #include "mink/mdd/detail/pair_frame.hpp"
 
 namespace mink {
@@ -63,6 +67,7 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
   struct Corner {
     Vec3<T> a;  // support point of M minus c
     int p, q;
+    Vec3<T> d;  // the direction it is the support point along (an outer normal of M there)
   };
   ExitPortal<T> out;
   // Discovery directions jump across the sphere: the hierarchy or a seeded hill-climb
@@ -78,7 +83,7 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
     hintP = far ? F.supportPFar(d, hintP) : F.supportPRefine(d, hintP);
     hintQ = far ? F.supportMinusQFar(d, hintQ) : F.supportMinusQRefine(d, hintQ);
     const Vec3<T> a = F.P().vertex(hintP) - F.q(hintQ) - c;
-    return Corner{e != 0 ? timesPow2(a, -e) : a, hintP, hintQ};
+    return Corner{e != 0 ? timesPow2(a, -e) : a, hintP, hintQ, d};
   };
   auto finish = [&](const Vec3<T>& n, const Corner& at, bool converged) {
     out.normal = n;
@@ -128,6 +133,73 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
   if (separates(m3, b3)) return finish(m3, b3, false);
   Corner b2 = b1;
   b1 = x;
+  auto isCorner = [&](const Corner& y) {
+    return (y.p == b1.p && y.q == b1.q) || (y.p == b2.p && y.q == b2.q) || (y.p == b3.p && y.q == b3.q);
+  };
+  // Secant steps (large shapes, inexact T, mdd mode). On a finely tessellated smooth M a
+  // step along the portal's normal shrinks the portal by a constant factor only, and its
+  // early steps jump far (hierarchy descents). Each corner is the support point along its
+  // own direction, an outer normal of M there; the ray's barycentric weights in the
+  // portal, det(σ, b_j, b_k), interpolate those normals to an estimate of M's normal
+  // where the ray leaves it, and the support point along that lands near the exit.
+  const bool secant = large && !separationTol && !ScalarTraits<T>::isExact;
+  bool reopened = false;
+  auto secantNormal = [&](Vec3<T>& ni) {
+    if constexpr (ScalarTraits<T>::isExact) {
+      (void)ni;
+      return false;
+    } else {
+      const T w1 = det3(sigma, b2.a, b3.a), w2 = det3(sigma, b3.a, b1.a), w3 = det3(sigma, b1.a, b2.a);
+      if (!(w1 >= T(0) && w2 >= T(0) && w3 >= T(0))) return false;
+      ni = w1 * b1.d.normalized() + w2 * b2.d.normalized() + w3 * b3.d.normalized();
+      return ni.allFinite() && ni != Vec3<T>::Zero();
+    }
+  };
+  // Once a secant step returns a corner y (the exit is within about a face of it), a small
+  // portal around y: the support points along three directions at angle ~ε from the secant
+  // normal, climbed from y. ε: three times y's distance from the ray over the curvature
+  // radius the corners show (their distance over the angle between their directions), at
+  // least 1e-3; doubled until the three points' cone from c holds σ (six tries). The
+  // refinement from there takes short climbs. A speed choice only: every answer is
+  // certified after the portal (exit_face.hpp).
+  auto reopenAround = [&](const Corner& y, const Vec3<T>& ni) {
+    if constexpr (ScalarTraits<T>::isExact) {
+      (void)y, (void)ni;
+      return false;
+    } else {
+      using std::acos;
+      const Corner* bs[3] = {&b1, &b2, &b3};
+      T radius = T(-1), shortest = T(0);
+      for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j) {
+          const T len = (bs[i]->a - bs[j]->a).norm();
+          const T angle = acos(std::max(T(-1), std::min(T(1), bs[i]->d.normalized().dot(bs[j]->d.normalized()))));
+          if (len > T(0) && angle > T(0) && (radius < T(0) || len < shortest)) shortest = len, radius = len / angle;
+        }
+      if (!(radius > T(0)) || !ScalarTraits<T>::isFinite(radius)) return false;
+      const Vec3<T> sh = sigma.normalized(), n0 = ni.normalized();
+      const auto basis = orthogonalBasis(n0);
+      T eps = std::max(T(3) * (y.a - y.a.dot(sh) * sh).norm() / radius, T(1e-3));
+      for (int tries = 0; tries < 6 && out.steps + 3 <= cap; ++tries, eps *= T(2)) {
+        Corner r[3];
+        for (int k = 0; k < 3; ++k) {
+          const T cs[3] = {T(1), T(-0.5), T(-0.5)}, sn[3] = {T(0), T(0.8660254037844386), T(-0.8660254037844386)};
+          hintP = y.p;
+          hintQ = y.q;
+          r[k] = support(Vec3<T>(n0 + eps * (cs[k] * basis.first + sn[k] * basis.second)), false);
+        }
+        const T D = det3(r[0].a, r[1].a, r[2].a);
+        if (D == T(0)) continue;
+        if (D < T(0)) std::swap(r[1], r[2]);
+        if (det3(sigma, r[1].a, r[2].a) >= T(0) && det3(r[0].a, sigma, r[2].a) >= T(0) &&
+            det3(r[0].a, r[1].a, sigma) >= T(0)) {
+          b1 = r[0], b2 = r[1], b3 = r[2];
+          return true;
+        }
+      }
+      return false;
+    }
+  };
   // Invariant from here: det(b1, b2, b3) > 0 (c strictly inside M makes every support
   // point strictly beyond c along its direction).
   while (out.steps < cap) {
@@ -169,24 +241,40 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
       out.verdict = ExitPortal<T>::Verdict::Inside;
       return finish(n, b1, false);
     }
-    // Hill-climb from the corner furthest along n: the shortest climb. Where a shape has
-    // a hierarchy (a climb's step is a cache miss there, and a climb over the cap a
-    // descent) each shape climbs from its own vertex furthest along n of the three.
-    if (large) {
-      climbFrom(n, b1, b2, b3);
-    } else {
-      const T h1 = n.dot(b1.a), h2 = n.dot(b2.a), h3 = n.dot(b3.a);
-      const Corner& from = h1 >= h2 ? (h1 >= h3 ? b1 : b3) : (h2 >= h3 ? b2 : b3);
-      hintP = from.p;
-      hintQ = from.q;
+    Corner y;
+    bool fromSecant = false;
+    Vec3<T> ni;
+    if (secant && secantNormal(ni)) {
+      climbFrom(ni, b1, b2, b3);
+      y = support(ni, false);
+      if (isCorner(y)) {
+        if (!reopened) {
+          reopened = true;
+          if (reopenAround(y, ni)) continue;
+        }
+      } else {
+        fromSecant = n.dot(y.a - b1.a) > T(0);  // else the step along n decides
+      }
     }
-    const Corner y = support(n, false);
-    if (separates(n, y)) return finish(n, y, false);
-    const bool known = (y.p == b1.p && y.q == b1.q) || (y.p == b2.p && y.q == b2.q) || (y.p == b3.p && y.q == b3.q);
-    if (known || !(n.dot(y.a - b1.a) > T(0))) {
-      const Corner* bs[3] = {&b1, &b2, &b3};
-      for (int i = 0; i < 3; ++i) out.cornerP[i] = bs[i]->p, out.cornerQ[i] = bs[i]->q;
-      return finish(n, y, true);
+    if (!fromSecant) {
+      // Hill-climb from the corner furthest along n: the shortest climb. Where a shape has
+      // a hierarchy (a climb's step is a cache miss there, and a climb over the cap a
+      // descent) each shape climbs from its own vertex furthest along n of the three.
+      if (large) {
+        climbFrom(n, b1, b2, b3);
+      } else {
+        const T h1 = n.dot(b1.a), h2 = n.dot(b2.a), h3 = n.dot(b3.a);
+        const Corner& from = h1 >= h2 ? (h1 >= h3 ? b1 : b3) : (h2 >= h3 ? b2 : b3);
+        hintP = from.p;
+        hintQ = from.q;
+      }
+      y = support(n, false);
+      if (separates(n, y)) return finish(n, y, false);
+      if (isCorner(y) || !(n.dot(y.a - b1.a) > T(0))) {
+        const Corner* bs[3] = {&b1, &b2, &b3};
+        for (int i = 0; i < 3; ++i) out.cornerP[i] = bs[i]->p, out.cornerQ[i] = bs[i]->q;
+        return finish(n, y, true);
+      }
     }
     // The plane through the ray and y splits the portal; σ lies in the sub-cone on the
     // side where the signs of b_i·(σ × y) change (σ ∈ cone(b1, b2, y) iff b1·m ≥ 0 ≥ b2·m,
