@@ -16,6 +16,7 @@
 #include "support/gjk_reference.hpp"
 #include "support/mdd_reference.hpp"
 #include "support/mdd_status.hpp"
+#include "support/degenerate_contacts.hpp"
 #include "support/exact_placement.hpp"
 #include "support/paper_shapes.hpp"
 
@@ -502,6 +503,67 @@ TEST(MddLarge, ColdQueriesWithHierarchiesTouchAfterTheMotion) {
   EXPECT_LT(worstFloat, 1e-4);  // float's rounding of a 5-unit scene, with room
   EXPECT_GT(separated, 5);
   EXPECT_GT(penetrating, 5);
+}
+
+// The degenerate contacts of the worst-case benchmark (prisms resting face to face, caps
+// sunk into each other, cylinders side by side, cones apex to apex; each beside its
+// generic twin) with 2,048-gon shapes, whose hierarchies put the exit portal's secant steps
+// on caps of thousands of coplanar vertices: every answer as the hierarchy-free path
+// (plain refinement) gives it, at the scene's pose and near it, and at random poses. (A
+// secant portal that does not converge there is rerun without secant steps; without that
+// rerun 19 of these queries ended in IterationLimit.)
+TEST(MddLarge, DegenerateFamiliesAnswerAsTheClimbsOnlyPath) {
+  mink::MddOptions<double> climbsOnly;
+  climbsOnly.useHierarchy = false;
+  std::mt19937 rng(5);
+  int checked = 0;
+  for (const std::string& family : mink_test::degenerateFamilies()) {
+    for (const bool generic : {false, true}) {
+      const mink_test::ContactScene sc = mink_test::degenerateScene(family, 2048, generic);
+      const auto P = ConvexPolyhedron<double>::fromPoints(sc.P);
+      const auto Q = ConvexPolyhedron<double>::fromPoints(sc.Q);
+      Pose<double> pose;
+      pose.rotation = sc.rotQ;
+      pose.translation = sc.tQ;
+      auto check = [&](const Pose<double>& poseQ, const Vec3d& s, const std::string& where) {
+        const auto r = mink::mdd(P, Pose<double>(), Q, poseQ, s);
+        const auto r0 = mink::mdd(P, Pose<double>(), Q, poseQ, s, climbsOnly);
+        ASSERT_EQ(r.status, r0.status) << family << (generic ? " generic " : " ") << where;
+        if (r.status != MddStatus::NoContact)
+          EXPECT_NEAR(r.translation, r0.translation, 1e-9 * (1.0 + std::abs(r0.translation)))
+              << family << (generic ? " generic " : " ") << where;
+        ++checked;
+      };
+      for (std::size_t i = 0; i < sc.dirs.size(); ++i) check(pose, sc.dirs[i], "direction " + std::to_string(i));
+      for (int k = 0; k < 60; ++k) {
+        Pose<double> poseQ = pose;
+        if (k % 3 == 0) {
+          poseQ.translation += mink_test::randomUnitVector(rng) * mink_test::uniformIn(rng, 0.0, 0.2);
+        } else {
+          poseQ.rotation = mink_test::randomRotation(rng);
+          poseQ.translation = mink_test::randomUnitVector(rng) * mink_test::uniformIn(rng, 0.0, 5.0);
+        }
+        check(poseQ, mink_test::randomUnitVector(rng), "pose " + std::to_string(k));
+      }
+    }
+  }
+  EXPECT_GT(checked, 700);
+}
+
+// KNOWN BUG (found 2026-12-07, before the secant steps; issue 16's note): two 512-gon
+// prisms side by side touching along a line, s = (1, 1, 0): with hierarchies mdd() answers
+// NoContact, without them Touching, which mddExact<Gmpq> certifies (parameter 0). A
+// silently wrong answer on a grazing line; disabled until the centre of duality decides
+// it exactly whichever tied support vertex the hierarchy returns.
+TEST(MddLarge, DISABLED_CylindersSideGrazingIsTouchingWithHierarchies) {
+  const mink_test::ContactScene sc = mink_test::degenerateScene("cylinders-side", 512, false);
+  const auto P = ConvexPolyhedron<double>::fromPoints(sc.P);
+  const auto Q = ConvexPolyhedron<double>::fromPoints(sc.Q);
+  ASSERT_NE(mink::hierarchyOf(P), nullptr);
+  Pose<double> pose;
+  pose.rotation = sc.rotQ;
+  pose.translation = sc.tQ;
+  EXPECT_EQ(mink::mdd(P, Pose<double>(), Q, pose, Vec3d(1, 1, 0)).status, MddStatus::Touching);
 }
 
 // ---------------------------------------------------------------------------------------

@@ -53,17 +53,17 @@ struct ExitPortal {
   /// Converged: the portal's corners, points of the exit facet as support vertex pairs
   /// (P's, −Q's); ExitFaceSearch::tryAround names an EE face from them.
   int cornerP[3] = {-1, -1, -1}, cornerQ[3] = {-1, -1, -1};
+  /// The secant steps ran (large shapes; exitPortal reruns without them if not converged).
+  bool usedSecant = false;
   /// Collision mode only: what the portal proved about the origin.
   enum class Verdict { Unknown, Inside, Outside } verdict = Verdict::Unknown;
 };
 
-/// The exit-facet estimate for the ray c + u σ (frame of P). hintP / hintQ: support
-/// vertex hints (in and out). With `separationTol` (collision mode: σ must point from c
-/// at the origin), stops early with `verdict` Inside or Outside (header comment); an
-/// Outside verdict's `normal` is the separating direction.
+/// One run of the portal (exitPortal below), with the secant steps where `trySecant` and
+/// the shapes are large.
 template <class T>
-ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP,
-                         int& hintQ, const T* separationTol = nullptr) {
+ExitPortal<T> exitPortalRun(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP, int& hintQ,
+                            const T* separationTol, bool trySecant) {
   struct Corner {
     Vec3<T> a;  // support point of M minus c
     int p, q;
@@ -142,8 +142,9 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
   // own direction, an outer normal of M there; the ray's barycentric weights in the
   // portal, det(σ, b_j, b_k), interpolate those normals to an estimate of M's normal
   // where the ray leaves it, and the support point along that lands near the exit.
-  const bool secant = large && !separationTol && !ScalarTraits<T>::isExact;
+  const bool secant = trySecant && large && !separationTol && !ScalarTraits<T>::isExact;
   bool reopened = false;
+  out.usedSecant = secant;
   auto secantNormal = [&](Vec3<T>& ni) {
     if constexpr (ScalarTraits<T>::isExact) {
       (void)ni;
@@ -294,6 +295,24 @@ ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>&
   }
   const Vec3<T> n = (b2.a - b1.a).cross(b3.a - b1.a);
   return finish(n == Vec3<T>::Zero() ? sigma : n, b1, false);
+}
+
+/// The exit-facet estimate for the ray c + u σ (frame of P). hintP / hintQ: support
+/// vertex hints (in and out). With `separationTol` (collision mode: σ must point from c
+/// at the origin), stops early with `verdict` Inside or Outside (header comment); an
+/// Outside verdict's `normal` is the separating direction. On large shapes the secant
+/// steps run first; where that portal does not converge (flat faces of thousands of
+/// vertices can defeat the curvature estimate), the plain refinement runs again from the
+/// start, so that the estimate is never worse than the plain one's.
+template <class T>
+ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP,
+                         int& hintQ, const T* separationTol = nullptr) {
+  ExitPortal<T> est = exitPortalRun(F, c, sigma, hintP, hintQ, separationTol, true);
+  if (est.converged || est.verdict != ExitPortal<T>::Verdict::Unknown || !est.usedSecant) return est;
+  const int steps = est.steps;
+  est = exitPortalRun(F, c, sigma, hintP, hintQ, separationTol, false);
+  est.steps += steps;
+  return est;
 }
 
 }  // namespace detail
