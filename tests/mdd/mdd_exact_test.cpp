@@ -155,6 +155,34 @@ TEST(MddExact, DegenerateContacts) {
   tally.print("degenerate contacts");
 }
 
+// The same families at n = 512 (1,024-vertex prisms: the shapes have hierarchies, whose
+// support vertices among ties differ from a hill-climb's): mdd<double> against mddExact
+// (the exact reference's hull of M would have a million points). A tied support vertex
+// rounded the value of a grazing line's supporting plane below 0 (cylinders-side, s =
+// (1, 1, 0): NoContact for Touching).
+TEST(MddExact, DegenerateContactsWithHierarchies) {
+  for (const std::string& family : mink_test::degenerateFamilies()) {
+    for (bool generic : {false, true}) {
+      const mink_test::ContactScene sc = mink_test::degenerateScene(family, 512, generic);
+      const auto P = ConvexPolyhedron<double>::fromPoints(sc.P);
+      const auto Q = ConvexPolyhedron<double>::fromPoints(sc.Q);
+      if (family == "cylinders-side") ASSERT_NE(mink::hierarchyOf(P), nullptr);
+      Pose<double> poseQ;
+      poseQ.rotation = sc.rotQ;
+      poseQ.translation = sc.tQ;
+      for (std::size_t k = 0; k < sc.dirs.size(); ++k) {
+        const std::string what = family + (generic ? " generic" : " degenerate") + " dir " + std::to_string(k);
+        const auto r = mink::mdd(P, Pose<double>(), Q, poseQ, sc.dirs[k]);
+        const auto x = mink::mddExact<Rational>(P, Pose<double>(), Q, poseQ, sc.dirs[k]);
+        ASSERT_EQ(r.status, x.status) << what << " (certified " << x.certified << ")";
+        if (x.status != MddStatus::NoContact) {
+          EXPECT_NEAR(r.parameter, CGAL::to_double(x.parameter), 1e-12) << what;
+        }
+      }
+    }
+  }
+}
+
 // Small integer hulls under exact quarter turns: every number exact in double, ties
 // everywhere (lines through vertices and along faces, touching, single-point contacts).
 // Includes issue 17's case, where mdd<double> answers NoContact and the exact answer is

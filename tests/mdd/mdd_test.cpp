@@ -550,12 +550,11 @@ TEST(MddLarge, DegenerateFamiliesAnswerAsTheClimbsOnlyPath) {
   EXPECT_GT(checked, 700);
 }
 
-// KNOWN BUG (found 2026-12-07, before the secant steps; issue 16's note): two 512-gon
-// prisms side by side touching along a line, s = (1, 1, 0): with hierarchies mdd() answers
-// NoContact, without them Touching, which mddExact<Gmpq> certifies (parameter 0). A
-// silently wrong answer on a grazing line; disabled until the centre of duality decides
-// it exactly whichever tied support vertex the hierarchy returns.
-TEST(MddLarge, DISABLED_CylindersSideGrazingIsTouchingWithHierarchies) {
+// Two 512-gon prisms side by side touching along a line, s = (1, 1, 0): the line grazes
+// a face of M, the support value along its normal is 0 exactly, and a tied support
+// vertex from the hierarchy rounded it below 0 (NoContact, where mddExact<Gmpq> certifies
+// Touching). The centre of duality now certifies a miss exactly (missesExactly).
+TEST(MddLarge, CylindersSideGrazingIsTouchingWithHierarchies) {
   const mink_test::ContactScene sc = mink_test::degenerateScene("cylinders-side", 512, false);
   const auto P = ConvexPolyhedron<double>::fromPoints(sc.P);
   const auto Q = ConvexPolyhedron<double>::fromPoints(sc.Q);

@@ -22,9 +22,11 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "mink/core/defaults.hpp"
+#include "mink/core/difference_orientation.hpp"
 #include "mink/mdd/detail/contact_set.hpp"
 
 namespace mink {
@@ -48,6 +50,63 @@ struct CentreOfDuality {
 };
 
 
+/// Inexact T: does the line {t s} miss M, strictly beyond M's supporting plane normal to
+/// D = s × a, a = w × s as rounded? D is exactly orthogonal to s (and close to |s|² w),
+/// and the answer is exact on the numbers given (P's vertices, Q's in P's frame): each
+/// shape's support vertex along D is reached by a hill-climb from the hint with exact
+/// comparisons (D·(x − y) = det[s, a, x − y], core/difference_orientation.hpp), a vertex
+/// no neighbour beats being the support on a convex polytope, then the sign of D·(p − q).
+/// A rounded support value below 0 is not enough: on a line grazing a face of M (two
+/// cylinders side by side, the line along their contact) the value is 0 exactly, and a
+/// tied support vertex from the hierarchy rounded it below. The hints end at the two
+/// support vertices, the certificate mddExact checks a NoContact with. Usually no move
+/// and one determinant per neighbour of the two vertices, a filter deciding each.
+template <class T>
+bool missesExactly(const PairFrame<T>& F, const Vec3<T>& s, const Vec3<T>& w, int& hintP, int& hintQ) {
+  using std::abs;
+  const Vec3<T> a = w.cross(s);
+  const Vec3<T> o = Vec3<T>::Zero();
+  // D·x > D·y? A filter first: D and its magnitudes |s_i a_j| + |s_j a_i| rounded once,
+  // z = x − y rounded; the error of D·z against det[s, a, x − y] is below 6u Σ A_k |z_k|
+  // (u = eps / 2) plus the absolute error of products below the normal range.
+  const Vec3<T> D = s.cross(a);
+  const Vec3<T> A(abs(s[1] * a[2]) + abs(s[2] * a[1]), abs(s[2] * a[0]) + abs(s[0] * a[2]),
+                  abs(s[0] * a[1]) + abs(s[1] * a[0]));
+  constexpr T u = std::numeric_limits<T>::epsilon() / T(2);
+  auto above = [&](const Vec3<T>& x, const Vec3<T>& y) {
+    const Vec3<T> z = x - y;
+    const T value = D.dot(z);
+    const Vec3<T> za = z.cwiseAbs();
+    const T bound = T(8) * u * A.dot(za) + T(4) * std::numeric_limits<T>::denorm_min() * (za[0] + za[1] + za[2]) +
+                    T(64) * std::numeric_limits<T>::min();
+    if (value > bound) return true;
+    if (-value > bound) return false;
+    return orientDiff(o, s, o, a, y, x) > 0;
+  };
+  const ConvexPolyhedron<T>& P = F.P();
+  const ConvexPolyhedron<T>& Q = F.Q();
+  for (bool moved = true; moved;) {
+    moved = false;
+    const Vec3<T> p = P.vertex(hintP);
+    for (int v : P.vertexNeighbors(hintP))
+      if (above(P.vertex(v), p)) {
+        hintP = v;
+        moved = true;
+        break;
+      }
+  }
+  for (bool moved = true; moved;) {
+    moved = false;
+    const Vec3<T> q = F.q(hintQ);
+    for (int v : Q.vertexNeighbors(hintQ))
+      if (above(q, F.q(v))) {
+        hintQ = v;
+        moved = true;
+        break;
+      }
+  }
+  return above(F.q(hintQ), P.vertex(hintP));
+}
 
 /// Step 1 for direction s (frame of P). hintP / hintQ: support vertex hints (in and out).
 template <class T>
@@ -82,9 +141,14 @@ CentreOfDuality<T> centreOfDuality(const PairFrame<T>& F, const Vec3<T>& s, int&
     out.w = lift(d);
     return out;
   };
+  // Outside only where certified exactly (inexact T); a line within rounding of M's
+  // supporting plane grazes it (the facet then says whether the line meets M).
   auto outside = [&](const Pt2<T>& d) {
-    out.kind = Kind::Outside;
     out.w = lift(d);
+    if constexpr (!ScalarTraits<T>::isExact) {
+      if (!missesExactly(F, s, out.w, hintP, hintQ)) return boundary(d);
+    }
+    out.kind = Kind::Outside;
     return out;
   };
 
