@@ -59,16 +59,25 @@ struct ExitPortal {
   enum class Verdict { Unknown, Inside, Outside } verdict = Verdict::Unknown;
 };
 
-/// One run of the portal (exitPortal below), with the secant steps where `trySecant` and
-/// the shapes are large.
+/// A portal corner: a support point of M minus c and its vertices; with the secant steps
+/// also the direction it is the support point along (an outer normal of M there). Small
+/// shapes never take secant steps and copy the narrower corner (1% of a cold query).
+template <class T, bool Secant>
+struct PortalCorner {
+  Vec3<T> a;
+  int p, q;
+};
 template <class T>
+struct PortalCorner<T, true> : PortalCorner<T, false> {
+  Vec3<T> d;
+};
+
+/// One run of the portal (exitPortal below), with the secant steps where `Secant` (the
+/// shapes large, inexact T, mdd mode).
+template <class T, bool Secant>
 ExitPortal<T> exitPortalRun(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP, int& hintQ,
-                            const T* separationTol, bool trySecant) {
-  struct Corner {
-    Vec3<T> a;  // support point of M minus c
-    int p, q;
-    Vec3<T> d;  // the direction it is the support point along (an outer normal of M there)
-  };
+                            const T* separationTol) {
+  using Corner = PortalCorner<T, Secant>;
   ExitPortal<T> out;
   // Discovery directions jump across the sphere: the hierarchy or a seeded hill-climb
   // (support_seeds.hpp). Refinement directions move less: on large shapes a climb from
@@ -83,7 +92,12 @@ ExitPortal<T> exitPortalRun(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<
     hintP = far ? F.supportPFar(d, hintP) : F.supportPRefine(d, hintP);
     hintQ = far ? F.supportMinusQFar(d, hintQ) : F.supportMinusQRefine(d, hintQ);
     const Vec3<T> a = F.P().vertex(hintP) - F.q(hintQ) - c;
-    return Corner{e != 0 ? timesPow2(a, -e) : a, hintP, hintQ, d};
+    Corner y;
+    y.a = e != 0 ? timesPow2(a, -e) : a;
+    y.p = hintP;
+    y.q = hintQ;
+    if constexpr (Secant) y.d = d;
+    return y;
   };
   auto finish = [&](const Vec3<T>& n, const Corner& at, bool converged) {
     out.normal = n;
@@ -142,11 +156,11 @@ ExitPortal<T> exitPortalRun(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<
   // own direction, an outer normal of M there; the ray's barycentric weights in the
   // portal, det(σ, b_j, b_k), interpolate those normals to an estimate of M's normal
   // where the ray leaves it, and the support point along that lands near the exit.
-  const bool secant = trySecant && large && !separationTol && !ScalarTraits<T>::isExact;
+  constexpr bool secant = Secant && !ScalarTraits<T>::isExact;
   bool reopened = false;
   out.usedSecant = secant;
   auto secantNormal = [&](Vec3<T>& ni) {
-    if constexpr (ScalarTraits<T>::isExact) {
+    if constexpr (!secant) {
       (void)ni;
       return false;
     } else {
@@ -164,7 +178,7 @@ ExitPortal<T> exitPortalRun(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<
   // refinement from there takes short climbs. A speed choice only: every answer is
   // certified after the portal (exit_face.hpp).
   auto reopenAround = [&](const Corner& y, const Vec3<T>& ni) {
-    if constexpr (ScalarTraits<T>::isExact) {
+    if constexpr (!secant) {
       (void)y, (void)ni;
       return false;
     } else {
@@ -307,10 +321,12 @@ ExitPortal<T> exitPortalRun(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<
 template <class T>
 ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP,
                          int& hintQ, const T* separationTol = nullptr) {
-  ExitPortal<T> est = exitPortalRun(F, c, sigma, hintP, hintQ, separationTol, true);
-  if (est.converged || est.verdict != ExitPortal<T>::Verdict::Unknown || !est.usedSecant) return est;
+  if (ScalarTraits<T>::isExact || separationTol || !F.hasHierarchy())
+    return exitPortalRun<T, false>(F, c, sigma, hintP, hintQ, separationTol);
+  ExitPortal<T> est = exitPortalRun<T, true>(F, c, sigma, hintP, hintQ, separationTol);
+  if (est.converged) return est;
   const int steps = est.steps;
-  est = exitPortalRun(F, c, sigma, hintP, hintQ, separationTol, false);
+  est = exitPortalRun<T, false>(F, c, sigma, hintP, hintQ, separationTol);
   est.steps += steps;
   return est;
 }
