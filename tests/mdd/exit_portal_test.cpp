@@ -60,6 +60,44 @@ void expectConsistent(Verdict v, OriginLocation where, const std::string& what) 
   }
 }
 
+// The secant steps run only where both shapes are large and finely faceted (faces of at
+// most defaults::kSecantMaxFaceVertices vertices, degrees at most kSecantMaxDegree): on a
+// 512-gon prism's caps or a cone's apex of degree 1,024 they took three to four times the
+// portal steps of the plain refinement.
+TEST(ExitPortal, SecantStepsOnlyOnLargeFinelyFacetedShapes) {
+  using mink_test::paper_shapes_detail::fibonacciEllipsoid;
+  const auto E1 = ConvexPolyhedron<double>::fromPoints(fibonacciEllipsoid(2000, 1.0, 0.8, 0.6));
+  const auto E2 = ConvexPolyhedron<double>::fromPoints(fibonacciEllipsoid(1500, 0.7, 0.9, 0.5));
+  const auto prism = ConvexPolyhedron<double>::fromPoints(mink_test::degenerateScene("cylinders-side", 512, true).P);
+  const auto cone = ConvexPolyhedron<double>::fromPoints(mink_test::degenerateScene("cones-apex", 1024, true).P);
+  for (const auto* S : {&E1, &E2, &prism, &cone}) ASSERT_NE(mink::hierarchyOf(*S), nullptr);
+  EXPECT_LE(mink::hierarchyOf(E1)->shapeMaxFaceVertices(), mink::defaults::kSecantMaxFaceVertices);
+  EXPECT_LE(mink::hierarchyOf(E1)->shapeMaxDegree(), mink::defaults::kSecantMaxDegree);
+  EXPECT_EQ(mink::hierarchyOf(prism)->shapeMaxFaceVertices(), 512);
+  EXPECT_EQ(mink::hierarchyOf(cone)->shapeMaxDegree(), 1024);
+  std::mt19937 rng(7);
+  struct Case {
+    const ConvexPolyhedron<double>* P;
+    const ConvexPolyhedron<double>* Q;
+    bool useHierarchy, secant;
+  };
+  for (const Case& k : {Case{&E1, &E2, true, true}, Case{&E1, &E2, false, false}, Case{&E1, &prism, true, false},
+                        Case{&prism, &prism, true, false}, Case{&cone, &cone, true, false}}) {
+    const mink::Mat3<double> R = Eigen::AngleAxisd(0.3, Vec3d(1, 2, 3).normalized()).toRotationMatrix();
+    const Vec3d t(0.2, -0.1, 0.05);
+    const mink::detail::PairFrame<double> F(*k.P, *k.Q, R, t, k.useHierarchy);
+    EXPECT_EQ(F.finelyFacetedLarge(), k.secant);
+    const Vec3d c = k.P->interiorPoint() - (R * k.Q->interiorPoint() + t);
+    for (int i = 0; i < 8; ++i) {
+      const Vec3d sigma = mink_test::randomUnitVector(rng);
+      int hp = -1, hq = -1;
+      const auto est = mink::detail::exitPortal(F, c, sigma, hp, hq);
+      EXPECT_EQ(est.usedSecant, k.secant) << i;
+      EXPECT_GT(est.normal.dot(sigma), 0.0) << i;  // the exit facet faces along the ray
+    }
+  }
+}
+
 TEST(ExitPortal, CollisionVerdictsOnThePaperPairs) {
   std::mt19937 rng(2026);
   Counts counts;

@@ -49,6 +49,17 @@ constexpr int kSpatialOrderMinVertices = 1024;
 /// third of the portal's refinement directions are more than 16 moves from the last).
 constexpr int kHierarchyClimbMoves = 8;
 
+/// The exit portal's secant steps (mdd/detail/exit_portal.hpp) interpolate M's normal
+/// from the corners' support directions: they pay on finely faceted smooth shapes and
+/// cost on large flat faces and high-degree vertices (a 1,024-gon prism's generic
+/// contacts took 42 portal steps with them against 11 without, a cone's apex of degree
+/// 1,024 44 against 15). They run only where both shapes have a hierarchy whose shape
+/// has faces of at most kSecantMaxFaceVertices vertices and vertices of at most
+/// kSecantMaxDegree edges. Units: vertices, edges. Any value is correct (only speed
+/// changes); a triangulated sphere or ellipsoid has faces of 3 and degrees near 6.
+constexpr int kSecantMaxFaceVertices = 8;
+constexpr int kSecantMaxDegree = 32;
+
 /// Dobkin–Kirkpatrick construction removes independent vertices of degree at most
 /// this many per level. Unit: edges. Safe range: 6 .. 12 (the planar-graph bound
 /// guarantees a constant fraction of removable vertices for any value >= 6). Measured at

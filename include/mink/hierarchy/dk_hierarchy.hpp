@@ -165,6 +165,10 @@ class DKHierarchy {
   /// exact fill: only on shapes that are convex within their tolerance but not exactly
   /// (floating-point fromMesh). 0 for every exact hull (fromPoints, exact T).
   int rehulledLevels() const { return rehulled_; }
+  /// The shape's most vertices on one face (its merged coplanar faces as built).
+  int shapeMaxFaceVertices() const { return maxFaceVertices_; }
+  /// The shape's highest vertex degree (edges of the shape, not of the triangulation).
+  int shapeMaxDegree() const { return maxDegree_; }
 
   // ---- level structure (level-local vertex indices) ----
   /// Position of vertex v of level i (shape frame).
@@ -215,6 +219,7 @@ class DKHierarchy {
   std::vector<Level> levels_;
   DKBuildStop stop_ = DKBuildStop::ReachedTop;
   int rehulled_ = 0;
+  int maxFaceVertices_ = 0, maxDegree_ = 0;
 };
 
 /// The shape's hierarchy, built on first use (or up front by prepare(), prepare.hpp) and

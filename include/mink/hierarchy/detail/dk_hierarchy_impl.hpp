@@ -227,6 +227,9 @@ template <class T>
 DKHierarchy<T>::DKHierarchy(const ConvexPolyhedron<T>& shape, const DKHierarchyOptions& options) {
   detail::raiseIf(checkOptions(options));
   detail::DkPolygonFill fill;
+  for (int f = 0; f < shape.numFaces(); ++f)
+    maxFaceVertices_ = std::max(maxFaceVertices_, static_cast<int>(shape.faceVertices(f).size()));
+  for (int v = 0; v < shape.numVertices(); ++v) maxDegree_ = std::max(maxDegree_, shape.degree(v));
   levels_.push_back(triangulatedGraph(shape, fill));
   const std::array<int, 4> anchors = detail::dkAnchors(levels_[0].point);
 

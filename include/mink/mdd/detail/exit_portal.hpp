@@ -53,7 +53,8 @@ struct ExitPortal {
   /// Converged: the portal's corners, points of the exit facet as support vertex pairs
   /// (P's, −Q's); ExitFaceSearch::tryAround names an EE face from them.
   int cornerP[3] = {-1, -1, -1}, cornerQ[3] = {-1, -1, -1};
-  /// The secant steps ran (large shapes; exitPortal reruns without them if not converged).
+  /// The secant steps ran (both shapes large and finely faceted; exitPortal reruns
+  /// without them if not converged).
   bool usedSecant = false;
   /// Collision mode only: what the portal proved about the origin.
   enum class Verdict { Unknown, Inside, Outside } verdict = Verdict::Unknown;
@@ -73,7 +74,7 @@ struct PortalCorner<T, true> : PortalCorner<T, false> {
 };
 
 /// One run of the portal (exitPortal below), with the secant steps where `Secant` (the
-/// shapes large, inexact T, mdd mode).
+/// shapes large and finely faceted, inexact T, mdd mode).
 template <class T, bool Secant>
 ExitPortal<T> exitPortalRun(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP, int& hintQ,
                             const T* separationTol) {
@@ -150,9 +151,10 @@ ExitPortal<T> exitPortalRun(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<
   auto isCorner = [&](const Corner& y) {
     return (y.p == b1.p && y.q == b1.q) || (y.p == b2.p && y.q == b2.q) || (y.p == b3.p && y.q == b3.q);
   };
-  // Secant steps (large shapes, inexact T, mdd mode). On a finely tessellated smooth M a
-  // step along the portal's normal shrinks the portal by a constant factor only, and its
-  // early steps jump far (hierarchy descents). Each corner is the support point along its
+  // Secant steps (both shapes large and finely faceted, PairFrame::finelyFacetedLarge;
+  // inexact T, mdd mode). On a finely tessellated smooth M a step along the portal's
+  // normal shrinks the portal by a constant factor only, and its early steps jump far
+  // (hierarchy descents). Each corner is the support point along its
   // own direction, an outer normal of M there; the ray's barycentric weights in the
   // portal, det(σ, b_j, b_k), interpolate those normals to an estimate of M's normal
   // where the ray leaves it, and the support point along that lands near the exit.
@@ -314,14 +316,14 @@ ExitPortal<T> exitPortalRun(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<
 /// The exit-facet estimate for the ray c + u σ (frame of P). hintP / hintQ: support
 /// vertex hints (in and out). With `separationTol` (collision mode: σ must point from c
 /// at the origin), stops early with `verdict` Inside or Outside (header comment); an
-/// Outside verdict's `normal` is the separating direction. On large shapes the secant
-/// steps run first; where that portal does not converge (flat faces of thousands of
+/// Outside verdict's `normal` is the separating direction. On large, finely faceted
+/// shapes the secant steps run first; where that portal does not converge (flat faces of thousands of
 /// vertices can defeat the curvature estimate), the plain refinement runs again from the
 /// start, so that the estimate is never worse than the plain one's.
 template <class T>
 ExitPortal<T> exitPortal(const PairFrame<T>& F, const Vec3<T>& c, const Vec3<T>& sigma, int& hintP,
                          int& hintQ, const T* separationTol = nullptr) {
-  if (ScalarTraits<T>::isExact || separationTol || !F.hasHierarchy())
+  if (ScalarTraits<T>::isExact || separationTol || !F.finelyFacetedLarge())
     return exitPortalRun<T, false>(F, c, sigma, hintP, hintQ, separationTol);
   ExitPortal<T> est = exitPortalRun<T, true>(F, c, sigma, hintP, hintQ, separationTol);
   if (est.converged) return est;

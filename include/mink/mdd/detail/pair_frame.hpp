@@ -111,6 +111,17 @@ class PairFrame {
   }
   /// Does either shape have a hierarchy that the queries may use?
   bool hasHierarchy() const { return useHierarchy_ && (hierarchyOf(P_) || hierarchyOf(Q_)); }
+  /// Do both shapes have a hierarchy, and small faces and vertex degrees (finely faceted,
+  /// like a tessellated smooth surface)? Where the exit portal takes secant steps
+  /// (defaults::kSecantMaxFaceVertices, kSecantMaxDegree).
+  bool finelyFacetedLarge() const {
+    if (!useHierarchy_) return false;
+    auto fine = [](const DKHierarchy<T>* H) {
+      return H && H->shapeMaxFaceVertices() <= defaults::kSecantMaxFaceVertices &&
+             H->shapeMaxDegree() <= defaults::kSecantMaxDegree;
+    };
+    return fine(hierarchyOf(P_)) && fine(hierarchyOf(Q_));
+  }
   /// Inexact T: for a scene far from unit order (size beyond 2^±kUnitBand: 2^±64 in
   /// double, 2^±8 in float, a sixteenth of the exponent range), the exponent e of
   /// its size, so that coordinates of M taken in units of 2^e are of unit order; else 0.
