@@ -516,6 +516,24 @@ TEST(Orient2dExact, TinyCoordinatesBesideUnitOnes) {
   EXPECT_EQ(failures, 0);
 }
 
+// Points drawn from a few values (0, tiny, denormal, unit): shared coordinates make many
+// differences exactly 0, where orient2d answers 0 without the exact stage if both
+// products vanish; a product that only underflows (1e-300 x 1e-300) must still count.
+TEST(Orient2dExact, SharedCoordinatesAndUnderflowingProducts) {
+  std::mt19937 rng(9208u);
+  const double values[] = {0.0, 1e-300, -1e-300, std::numeric_limits<double>::denorm_min(), 1.0, -3.0, 1e-160};
+  std::uniform_int_distribution<int> pick(0, 6);
+  int failures = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double a[6] = {values[pick(rng)], values[pick(rng)], values[pick(rng)],
+                         values[pick(rng)], values[pick(rng)], values[pick(rng)]};
+    expectExact2d(a[0], a[1], a[2], a[3], a[4], a[5], "seed 9208 #" + std::to_string(i), failures);
+  }
+  EXPECT_EQ(failures, 0);
+  EXPECT_EQ(mink::orient2d(0.0, 0.0, 1.0, 0.0, 5.0, 0.0), 0);         // on one axis
+  EXPECT_EQ(mink::orient2d(0.0, 0.0, 0.0, 1e-300, 1e-300, 0.0), -1);  // both products underflow
+}
+
 TEST(Orient2dExact, Gmpq) {
   std::mt19937 rng(9206u);
   std::uniform_int_distribution<int> num(-1000, 1000), den(1, 99);
