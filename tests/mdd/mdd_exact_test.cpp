@@ -166,7 +166,9 @@ TEST(MddExact, DegenerateContactsWithHierarchies) {
       const mink_test::ContactScene sc = mink_test::degenerateScene(family, 512, generic);
       const auto P = ConvexPolyhedron<double>::fromPoints(sc.P);
       const auto Q = ConvexPolyhedron<double>::fromPoints(sc.Q);
-      if (family == "cylinders-side") ASSERT_NE(mink::hierarchyOf(P), nullptr);
+      if (family == "cylinders-side") {
+        ASSERT_NE(mink::hierarchyOf(P), nullptr);
+      }
       Pose<double> poseQ;
       poseQ.rotation = sc.rotQ;
       poseQ.translation = sc.tQ;

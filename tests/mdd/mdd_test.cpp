@@ -529,9 +529,10 @@ TEST(MddLarge, DegenerateFamiliesAnswerAsTheClimbsOnlyPath) {
         const auto r = mink::mdd(P, Pose<double>(), Q, poseQ, s);
         const auto r0 = mink::mdd(P, Pose<double>(), Q, poseQ, s, climbsOnly);
         ASSERT_EQ(r.status, r0.status) << family << (generic ? " generic " : " ") << where;
-        if (r.status != MddStatus::NoContact)
+        if (r.status != MddStatus::NoContact) {
           EXPECT_NEAR(r.translation, r0.translation, 1e-9 * (1.0 + std::abs(r0.translation)))
               << family << (generic ? " generic " : " ") << where;
+        }
         ++checked;
       };
       for (std::size_t i = 0; i < sc.dirs.size(); ++i) check(pose, sc.dirs[i], "direction " + std::to_string(i));
