@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -222,6 +223,93 @@ TEST(ContactSet, PreferNonNegativeKeepsWhatItCannotImprove) {
   loc = fine;
   mink::detail::preferNonNegative(many, loc);
   EXPECT_TRUE(same(loc, fine));
+}
+
+// toFaceOrder: a support set that is one face of the shape (an n-gon prism's cap) comes
+// back in the face's own cyclic order; sets that are not a face (an edge, a vertex) or
+// are small stay as supportSet left them.
+TEST(ContactSet, SupportSetsThatAreOneFaceTakeItsCyclicOrder) {
+  const double pi = 3.14159265358979323846;
+  for (int n : {8, 16, 64, 300}) {
+    std::vector<mink::Vec3<double>> pts;
+    for (int i = 0; i < n; ++i)
+      for (double z : {0.0, 1.0}) pts.push_back({std::cos(2 * pi * i / n), std::sin(2 * pi * i / n), z});
+    const auto X = mink::ConvexPolyhedron<double>::fromPoints(pts);
+    mink::detail::EpochMarks marks;
+    std::vector<int> set;
+    for (const mink::Vec3<double>& d : {mink::Vec3<double>(0, 0, 1), mink::Vec3<double>(0, 0, -1)}) {
+      auto value = [&](int v) { return d.dot(X.vertex(v)); };
+      const int v0 = X.support(d);
+      ASSERT_TRUE(mink::detail::supportSet(X, v0, value, 0.0, marks, set));
+      ASSERT_EQ(int(set.size()), n);
+      const std::vector<int> bfs = set;
+      const bool ordered = mink::detail::toFaceOrder(X, value, 0.0, set);
+      EXPECT_EQ(ordered, n >= mink::defaults::kConvexCycleMinPoints) << "n " << n;
+      if (!ordered) {
+        EXPECT_EQ(set, bfs);
+        continue;
+      }
+      std::vector<int> a = set, b = bfs;
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      EXPECT_EQ(a, b) << "the same vertices";
+      // Consecutive vertices of the set are joined by edges of X (a cycle).
+      for (int i = 0; i < n; ++i) {
+        const auto nb = X.vertexNeighbors(set[i]);
+        EXPECT_TRUE(std::find(nb.begin(), nb.end(), set[(i + 1) % n]) != nb.end()) << "n " << n << " i " << i;
+      }
+    }
+    // A side edge's direction: a set of two vertices, never reordered.
+    const mink::Vec3<double> d(std::cos(2 * pi * 0.5 / n), std::sin(2 * pi * 0.5 / n), 0);
+    auto value = [&](int v) { return d.dot(X.vertex(v)); };
+    ASSERT_TRUE(mink::detail::supportSet(X, X.support(d), value, 1e-12, marks, set));
+    EXPECT_EQ(set.size(), 4u);  // the side face of the prism between vertices 0 and 1 (a rectangle)
+    EXPECT_FALSE(mink::detail::toFaceOrder(X, value, 1e-12, set));
+  }
+}
+
+// locateOrigin2 on many points in cyclic order around a convex polygon (no sort: its
+// own hull) answers as on the same points shuffled (sorted and hulled): inside, on an
+// edge, at a vertex, outside by an ulp-sized margin and by a clear one.
+TEST(ContactSet, PointsInCyclicOrderLocateAsShuffled) {
+  std::mt19937 rng(602u);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 400; ++trial) {
+    const int n = 16 + trial % 40;
+    std::vector<double> ang(n);
+    for (double& a : ang) a = 6.283185307179586 * u(rng);
+    std::sort(ang.begin(), ang.end());
+    const double scale = std::ldexp(1.0, trial % 21 - 10);
+    std::vector<std::pair<double, double>> poly;
+    for (double a : ang) poly.push_back({scale * std::cos(a), scale * std::sin(a)});
+    const int mode = trial % 4;
+    std::pair<double, double> o(0.0, 0.0);
+    if (mode == 0) o = {0.5 * (poly[0].first + poly[1].first), 0.5 * (poly[0].second + poly[1].second)};
+    if (mode == 1) o = poly[0];
+    if (mode == 2) o = {0.1 * scale, -0.2 * scale};
+    if (mode == 3) o = {3 * scale, 0.0};
+    std::vector<P2> pts;
+    for (int i = 0; i < n; ++i) pts.push_back({{poly[i].first - o.first, poly[i].second - o.second}, i});
+    const std::vector<P2> byId = pts;  // ids are indices here
+    if (trial % 2) std::reverse(pts.begin(), pts.end());  // clockwise as well
+    std::vector<P2> inOrder = pts, shuffled = pts, hull;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    mink::detail::OriginLocation<double> a, b;
+    const bool hitA = mink::detail::locateOrigin2(inOrder, hull, a);
+    const bool hitB = mink::detail::locateOrigin2(shuffled, hull, b);
+    EXPECT_EQ(hitA, hitB) << "trial " << trial << " mode " << mode;
+    if (mode == 3) {
+      EXPECT_FALSE(hitA) << "trial " << trial;
+    }
+    if (mode == 2) {
+      EXPECT_TRUE(hitA) << "trial " << trial;
+    }
+    if (hitA) {
+      bool convex = false;
+      EXPECT_LE(residual(byId, a, convex), 64 * 2.220446049250313e-16 * scale) << "trial " << trial;
+      EXPECT_TRUE(convex) << "trial " << trial;
+    }
+  }
 }
 
 }  // namespace

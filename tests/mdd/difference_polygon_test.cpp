@@ -10,6 +10,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/convex_hull_2.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
@@ -112,6 +113,89 @@ TEST(DifferencePolygon, ExactRationals) {
     }
     EXPECT_EQ(got, want) << "trial " << trial;
   }
+}
+
+// convexCycleOrientation: +1 / -1 exactly for strictly convex polygons in cyclic order
+// (any scale), 0 for a straight or reversed turn and for stars (every turn one way, but
+// winding round more than once) — the cases where a hull of the points is not the points.
+TEST(ConvexCycleOrientation, StrictlyConvexCyclesOnlyAtAnyScale) {
+  using P = std::pair<double, double>;
+  auto orientationOf = [](const std::vector<P>& v) {
+    return mink::detail::convexCycleOrientation<double>(v.size(), [&](std::size_t k) { return v[k]; });
+  };
+  const double pi = 3.14159265358979323846;
+  for (double scale : {1e-150, 1.0, 1e150}) {
+    for (int n : {3, 4, 16, 33, 1024}) {
+      std::vector<P> v;
+      for (int i = 0; i < n; ++i) v.push_back({scale * std::cos(2 * pi * i / n + 0.3), scale * (2 + std::sin(2 * pi * i / n + 0.3))});
+      EXPECT_EQ(orientationOf(v), 1) << "n " << n << " scale " << scale;
+      std::reverse(v.begin(), v.end());
+      EXPECT_EQ(orientationOf(v), -1) << "n " << n << " scale " << scale;
+      if (n >= 16) {
+        std::swap(v[3], v[7]);  // out of order
+        EXPECT_EQ(orientationOf(v), 0) << "n " << n << " scale " << scale;
+      }
+    }
+    // Stars {21/2}, {21/4}: every turn to the left, winding twice and four times.
+    for (int k : {2, 4}) {
+      std::vector<P> v;
+      for (int i = 0; i < 21; ++i) v.push_back({scale * std::cos(2 * pi * (i * k % 21) / 21), scale * std::sin(2 * pi * (i * k % 21) / 21)});
+      EXPECT_EQ(orientationOf(v), 0) << "star k " << k << " scale " << scale;
+    }
+  }
+  // Points of the parabola y = x^2 (exact integers), closed by the chord above them.
+  std::vector<P> v;
+  for (int x = -10; x <= 10; ++x) v.push_back({double(x), double(x * x)});
+  EXPECT_EQ(orientationOf(v), 1);
+  v[10] = {0.0, 1.0};  // collinear with (-1, 1) and (1, 1): a straight turn
+  EXPECT_EQ(orientationOf(v), 0);
+  v[10] = {0.0, 1.5};  // a reflex vertex
+  EXPECT_EQ(orientationOf(v), 0);
+  v[10] = {0.0, 1.0 - std::ldexp(1.0, -52)};  // convex again, by one unit in the last place
+  EXPECT_EQ(orientationOf(v), 1);
+  EXPECT_EQ(orientationOf(std::vector<P>{{0, 0}, {1, 0}}), 0);
+  EXPECT_EQ(orientationOf(std::vector<P>{{0, 0}, {1, 0}, {1, 0}, {0, 1}}), 0);  // a repeated point
+}
+
+// Sets in a face's cyclic order (the O(n) hull) and the same sets shuffled (sorted for a
+// hull) give the exact hull of all differences; so do ordered sets the check refuses
+// (a collinear point, a reflex vertex, a star order), which fall back to the sort.
+TEST(DifferencePolygon, OrderedSetsTakeTheLinearHullAndMatchTheExactHull) {
+  const double pi = 3.14159265358979323846;
+  std::mt19937 rng(18);
+  for (int m : {16, 17, 64, 300}) {
+    for (int n : {16, 31, 256}) {
+      mink::detail::DifferencePolygon<double> D;
+      for (int i = 0; i < m; ++i) D.a.push_back({3 * std::cos(2 * pi * i / m + 0.2), 3 * std::sin(2 * pi * i / m + 0.2)});
+      for (int j = n; j-- > 0;) D.b.push_back({std::cos(2 * pi * j / n), 0.5 * std::sin(2 * pi * j / n)});  // clockwise
+      D.compute();
+      expectHullVertices(D, "ordered m " + std::to_string(m) + " n " + std::to_string(n));
+      std::set<std::pair<double, double>> ordered, shuffled;
+      for (const auto& ij : D.pairs) ordered.insert({D.a[ij.first].first - D.b[ij.second].first, D.a[ij.first].second - D.b[ij.second].second});
+      std::shuffle(D.a.begin(), D.a.end(), rng);
+      std::shuffle(D.b.begin(), D.b.end(), rng);
+      D.compute();
+      expectHullVertices(D, "shuffled m " + std::to_string(m) + " n " + std::to_string(n));
+      for (const auto& ij : D.pairs) shuffled.insert({D.a[ij.first].first - D.b[ij.second].first, D.a[ij.first].second - D.b[ij.second].second});
+      EXPECT_EQ(ordered, shuffled);
+    }
+  }
+  // Exact integer polygons of 21 points on a parabola, in order, then spoiled.
+  mink::detail::DifferencePolygon<double> D;
+  for (int x = -10; x <= 10; ++x) D.a.push_back({double(x), double(x * x)});
+  for (int j = 0; j < 20; ++j) D.b.push_back({double(j % 5), double(j / 5)});  // a grid: no cyclic order
+  D.compute();
+  expectHullVertices(D, "parabola against a grid");
+  D.a[10] = {0.0, 1.0};
+  D.compute();
+  expectHullVertices(D, "parabola with a collinear point");
+  D.a[10] = {0.0, 1.5};
+  D.compute();
+  expectHullVertices(D, "parabola with a reflex vertex");
+  D.a.clear();
+  for (int i = 0; i < 21; ++i) D.a.push_back({std::cos(2 * pi * (i * 2 % 21) / 21), std::sin(2 * pi * (i * 2 % 21) / 21)});
+  D.compute();
+  expectHullVertices(D, "star order");
 }
 
 }  // namespace

@@ -60,6 +60,14 @@ constexpr int kHierarchyClimbMoves = 8;
 constexpr int kSecantMaxFaceVertices = 8;
 constexpr int kSecantMaxDegree = 32;
 
+/// A contact polygon of at least kConvexCycleMinPoints points (a support set that is one
+/// face of a shape, the vertices of a facet of M) is first tried as a strictly convex
+/// polygon in the order given (mdd/detail/difference_polygon.hpp, convexCycleOrientation:
+/// exact turns, O(n)); only where that fails is it sorted for a hull (O(n log n)). Two
+/// resting 1,024-gon caps spent 38% of a query in those sorts. Units: points. Any value
+/// is correct (only speed changes): below it the sort is as fast as the check.
+constexpr int kConvexCycleMinPoints = 16;
+
 /// Dobkin–Kirkpatrick construction removes independent vertices of degree at most
 /// this many per level. Unit: edges. Safe range: 6 .. 12 (the planar-graph bound
 /// guarantees a constant fraction of removable vertices for any value >= 6). Measured at

@@ -12,6 +12,7 @@
 
 #include "mink/core/defaults.hpp"
 #include "mink/core/orientation.hpp"
+#include "mink/mdd/detail/difference_polygon.hpp"
 #include "mink/mdd/detail/pair_frame.hpp"
 
 namespace mink {
@@ -42,6 +43,30 @@ bool supportSet(const ConvexPolyhedron<T>& X, int v0, const Value& value, const 
       out.push_back(w);
     }
   return maximiser;
+}
+
+/// Where a support set `set` (as supportSet left it: maximiser first, same value and eps)
+/// is exactly the vertex set of one face of X, rewrites it in that face's cyclic order
+/// and returns true (the order is then a convex polygon's, up to rounding, and
+/// DifferencePolygon hulls it without sorting: two resting n-gon faces cost O(n), not
+/// O(n log n)). Only for sets of at least defaults::kConvexCycleMinPoints vertices;
+/// O(|set|) per face of that size at the maximiser. A face whose vertices all reach the
+/// set's floor is connected through its own edges, so supportSet's walk took all of them;
+/// with as many vertices as the set, it is the set.
+template <class T, class Value>
+bool toFaceOrder(const ConvexPolyhedron<T>& X, const Value& value, const T& eps, std::vector<int>& set) {
+  const int k = static_cast<int>(set.size());
+  if (k < defaults::kConvexCycleMinPoints) return false;
+  const T floor = value(set[0]) - eps;
+  for (int f : X.vertexFaces(set[0])) {
+    if (X.faceSize(f) != k) continue;
+    const IndexRange face = X.faceVertices(f);
+    if (std::all_of(face.begin(), face.end(), [&](int v) { return !(value(v) < floor); })) {
+      set.assign(face.begin(), face.end());
+      return true;
+    }
+  }
+  return false;
 }
 
 /// 2-D points and their (rounded) cross product, difference and dot product.
@@ -236,23 +261,33 @@ template <class T>
 bool locateOrigin2Strict(std::vector<std::pair<std::pair<T, T>, int>>& pts,
                          std::vector<std::pair<std::pair<T, T>, int>>& h, OriginLocation<T>& loc) {
   using P2 = std::pair<T, T>;
-  std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  pts.erase(std::unique(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
-            pts.end());
   const P2 o(T(0), T(0));
-  const std::size_t n = pts.size();
-  h.resize(2 * n + 1);
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    while (k >= 2 && orient2(h[k - 2].first, h[k - 1].first, pts[i].first) <= 0) --k;
-    h[k++] = pts[i];
+  // Points in cyclic order around a strictly convex polygon (a facet's vertices as
+  // DifferencePolygon names them) are their own hull: O(n), no sort.
+  int cycle = 0;
+  if (pts.size() >= static_cast<std::size_t>(defaults::kConvexCycleMinPoints))
+    cycle = convexCycleOrientation<T>(pts.size(), [&](std::size_t i) { return pts[i].first; });
+  if (cycle != 0) {
+    h.assign(pts.begin(), pts.end());
+    if (cycle < 0) std::reverse(h.begin(), h.end());
+  } else {
+    std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    pts.erase(std::unique(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
+              pts.end());
+    const std::size_t n = pts.size();
+    h.resize(2 * n + 1);
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      while (k >= 2 && orient2(h[k - 2].first, h[k - 1].first, pts[i].first) <= 0) --k;
+      h[k++] = pts[i];
+    }
+    for (std::size_t i = n - 1, lo = k + 1; i-- > 0;) {
+      while (k >= lo && orient2(h[k - 2].first, h[k - 1].first, pts[i].first) <= 0) --k;
+      h[k++] = pts[i];
+    }
+    if (k > 1) --k;  // last equals first
+    h.resize(k);
   }
-  for (std::size_t i = n - 1, lo = k + 1; i-- > 0;) {
-    while (k >= lo && orient2(h[k - 2].first, h[k - 1].first, pts[i].first) <= 0) --k;
-    h[k++] = pts[i];
-  }
-  if (k > 1) --k;  // last equals first
-  h.resize(k);
   auto onSegment = [&](const std::pair<P2, int>& a, const std::pair<P2, int>& b) {
     if (orient2(a.first, b.first, o) != 0) return false;
     const T dx = b.first.first - a.first.first, dy = b.first.second - a.first.second;

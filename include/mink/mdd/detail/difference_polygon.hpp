@@ -10,16 +10,55 @@
 // n-gons give sets of n points each. The hull of all n² differences cost n² log n, and
 // the grazing interval read off all pairs of them n⁴ (seconds at n = 256): the candidate
 // vertices are at most m + n.
+// A set already in cyclic order around a strictly convex polygon (a support set that is
+// one face of a shape, in the face's order) skips step 1's sort: convexCycleOrientation
+// checks the order with exact turns in O(m), so two resting faces cost O(m + n).
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <utility>
 #include <vector>
 
+#include "mink/core/defaults.hpp"
+#include "mink/core/orientation.hpp"
 #include "mink/core/scalar_traits.hpp"
 
 namespace mink {
 namespace detail {
+
+/// The orientation of the closed polygon p_0 ... p_{n-1} (point(k) returns p_k as a pair of
+/// coordinates) if it is strictly convex in that order: +1 counter-clockwise, -1 clockwise;
+/// 0 if it is not (fewer than three points, a straight or reversed turn, or turns all one
+/// way that wind round the polygon more than once, as a star does). Exact on the
+/// coordinates given: each turn is an orient2d sign; the winding is the number of edges
+/// whose direction passes from the upper half-plane [0, pi) to the lower one, read off the
+/// signs of the edges' rounded differences (rounding keeps a difference's sign, and its
+/// zero). A polygon it accepts is its own convex hull, so a caller holding points in
+/// cyclic order (a face's vertices) gets the hull in O(n), without sorting.
+template <class T, class PointAt>
+int convexCycleOrientation(std::size_t n, const PointAt& point) {
+  if (n < 3) return 0;
+  // 0 for directions in [0, pi), 1 for [pi, 2 pi).
+  auto half = [](const T& dx, const T& dy) { return (dy > T(0) || (dy == T(0) && dx > T(0))) ? 0 : 1; };
+  auto a = point(n - 1), b = point(0);
+  int before = half(T(b.first - a.first), T(b.second - a.second));
+  int orientation = 0, wraps = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto c = point(k + 1 < n ? k + 1 : 0);
+    // Each step turns by less than pi, so it cannot pass over a whole half-plane: with
+    // every turn one way, the half changes 0 -> 1 exactly once per turn round.
+    const int o = orient2d<T>(a.first, a.second, b.first, b.second, c.first, c.second);
+    if (o == 0 || (orientation != 0 && o != orientation)) return 0;
+    orientation = o;
+    const int after = half(T(c.first - b.first), T(c.second - b.second));
+    wraps += before == 0 && after == 1;
+    before = after;
+    a = b;
+    b = c;
+  }
+  return wraps == 1 ? orientation : 0;
+}
 
 template <class T>
 class DifferencePolygon {
@@ -86,6 +125,21 @@ class DifferencePolygon {
   // out := indices of the hull's vertices of set s (negated if asked), counter-clockwise
   // from the lowest (least y, then least x): where the edges' polar angles start at 0.
   void hull(const std::vector<P2>& s, bool negate, std::vector<int>& out) {
+    if (s.size() >= static_cast<std::size_t>(defaults::kConvexCycleMinPoints)) {
+      // Points in cyclic order around a strictly convex polygon are their hull: O(n).
+      const int n = static_cast<int>(s.size());
+      const int o = convexCycleOrientation<T>(s.size(), [&](std::size_t k) { return at(s, negate, int(k)); });
+      if (o != 0) {
+        int low = 0;
+        for (int i = 1; i < n; ++i) {
+          const P2 p = at(s, negate, i), q = at(s, negate, low);
+          if (p.second < q.second || (p.second == q.second && p.first < q.first)) low = i;
+        }
+        out.resize(s.size());
+        for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = o > 0 ? (low + i) % n : (low - i + n) % n;
+        return;
+      }
+    }
     order_.resize(s.size());
     for (std::size_t k = 0; k < s.size(); ++k) order_[k] = static_cast<int>(k);
     auto less = [&](int x, int y) {

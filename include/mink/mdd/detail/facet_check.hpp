@@ -258,8 +258,14 @@ class FacetCheck {
         return false;
     }
     const Vec3<T>& N = m.N;
-    const bool okP = supportSet(P, vp, [&](int v) { return T(N.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
-    const bool okQ = supportSet(Q, vq, [&](int v) { return T(-N.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
+    auto valueP = [&](int v) { return T(N.dot(P.vertex(v))); };
+    auto valueQ = [&](int v) { return T(-N.dot(F_.q(v))); };
+    const bool okP = supportSet(P, vp, valueP, eps, cache_.marksP, cache_.setP);
+    const bool okQ = supportSet(Q, vq, valueQ, eps, cache_.marksQ, cache_.setQ);
+    if (okP && okQ) {
+      toFaceOrder(P, valueP, eps, cache_.setP);
+      toFaceOrder(Q, valueQ, eps, cache_.setQ);
+    }
     return okP && okQ;
   }
 

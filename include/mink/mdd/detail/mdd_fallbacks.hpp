@@ -101,8 +101,10 @@ class MddFallbacks {
     vq = F_.supportMinusQ(w, cache_.vertexQ);
     T eps = T(0);
     if constexpr (!ScalarTraits<T>::isExact) eps = check_.slack() * w.norm();
-    supportSet(P, vp, [&](int v) { return T(w.dot(P.vertex(v))); }, eps, cache_.marksP, cache_.setP);
-    supportSet(Q, vq, [&](int v) { return T(-w.dot(F_.q(v))); }, eps, cache_.marksQ, cache_.setQ);
+    auto valueP = [&](int v) { return T(w.dot(P.vertex(v))); };
+    auto valueQ = [&](int v) { return T(-w.dot(F_.q(v))); };
+    if (supportSet(P, vp, valueP, eps, cache_.marksP, cache_.setP)) toFaceOrder(P, valueP, eps, cache_.setP);
+    if (supportSet(Q, vq, valueQ, eps, cache_.marksQ, cache_.setQ)) toFaceOrder(Q, valueQ, eps, cache_.setQ);
     // In the plane: coordinate a along s, b along e = w × s; the line is b == 0. In 2^e
     // units (see u1_): the crossings below multiply two coordinates. The facet's polygon
     // (its vertices in cyclic order) meets the line where its edges cross b == 0.
