@@ -10,22 +10,51 @@
 // n-gons give sets of n points each. The hull of all n² differences cost n² log n, and
 // the grazing interval read off all pairs of them n⁴ (seconds at n = 256): the candidate
 // vertices are at most m + n.
+// Every decision is exact on the coordinates given (the hulls' turns are orient2d signs,
+// the merge's order of two edges the exact sign of their cross product): with rounded
+// products, nearly parallel edges of the two polygons were misordered and the pairs
+// named points inside the sum, missing some of its vertices.
 // A set already in cyclic order around a strictly convex polygon (a support set that is
 // one face of a shape, in the face's order) skips step 1's sort: convexCycleOrientation
 // checks the order with exact turns in O(m), so two resting faces cost O(m + n).
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "mink/core/defaults.hpp"
+#include "mink/core/difference_orientation.hpp"
 #include "mink/core/orientation.hpp"
 #include "mink/core/scalar_traits.hpp"
 
 namespace mink {
 namespace detail {
+
+/// Exact sign of (p1 − p0) × (q1 − q0) for points of the plane (coordinate pairs): the
+/// order of two edges' directions, decided on the points given (the rounded differences
+/// would misorder nearly parallel edges). For double, orient2d's filter first (its bound
+/// holds for any two rows of rounded differences of inputs); where it cannot tell,
+/// orientDiff with the unit z vector as its third difference.
+template <class T>
+int crossOfDifferencesSign(const std::pair<T, T>& p0, const std::pair<T, T>& p1, const std::pair<T, T>& q0,
+                           const std::pair<T, T>& q1) {
+  if constexpr (std::is_same<T, double>::value) {
+    const T left = (p1.first - p0.first) * (q1.second - q0.second);
+    const T right = (p1.second - p0.second) * (q1.first - q0.first);
+    const T det = left - right;
+    constexpr T eps = std::numeric_limits<T>::epsilon() / T(2);
+    const T bound = (T(3) + T(16) * eps) * eps * (std::fabs(left) + std::fabs(right)) + detail::denormalErrorBound(T(2));
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+  }
+  auto lift = [](const std::pair<T, T>& x) { return Vec3<T>(x.first, x.second, T(0)); };
+  return orientDiff<T>(lift(p0), lift(p1), lift(q0), lift(q1), Vec3<T>(T(0), T(0), T(0)), Vec3<T>(T(0), T(0), T(1)));
+}
 
 /// The orientation of the closed polygon p_0 ... p_{n-1} (point(k) returns p_k as a pair of
 /// coordinates) if it is strictly convex in that order: +1 counter-clockwise, -1 clockwise;
@@ -88,8 +117,7 @@ class DifferencePolygon {
       } else if (cj == eb) {
         advanceA = true, advanceB = false;
       } else {
-        const P2 u = edge(a, false, ha_, i), v = edge(b, true, hb_, j);
-        const int c = angleCompare(u, v);
+        const int c = angleCompare(a, ha_, i, b, hb_, j);
         advanceA = c >= 0;  // A's edge comes first (or both, when parallel)
         advanceB = c <= 0;
       }
@@ -106,20 +134,21 @@ class DifferencePolygon {
   static P2 at(const std::vector<P2>& s, bool negate, int k) {
     return negate ? P2(T(-s[k].first), T(-s[k].second)) : s[k];
   }
-  static P2 edge(const std::vector<P2>& s, bool negate, const std::vector<int>& h, std::size_t i) {
-    const P2 p = at(s, negate, h[i]), q = at(s, negate, h[(i + 1) % h.size()]);
-    return {T(q.first - p.first), T(q.second - p.second)};
+  // 0 for polar angles in [0, π), 1 for [π, 2π): exact from the rounded difference q − p,
+  // whose signs (and zeros) are those of the exact one.
+  static int half(const P2& p, const P2& q) {
+    const T dx = T(q.first - p.first), dy = T(q.second - p.second);
+    return (dy > T(0) || (dy == T(0) && dx > T(0))) ? 0 : 1;
   }
-  static T cross(const P2& o, const P2& p, const P2& q) {
-    return (p.first - o.first) * (q.second - o.second) - (p.second - o.second) * (q.first - o.first);
-  }
-  // 0 for polar angles in [0, π), 1 for [π, 2π).
-  static int half(const P2& u) { return (u.second > T(0) || (u.second == T(0) && u.first > T(0))) ? 0 : 1; }
-  // Sign of angle(v) − angle(u) over [0, 2π): > 0 when u comes first.
-  static int angleCompare(const P2& u, const P2& v) {
-    const int hu = half(u), hv = half(v);
+  // Sign of angle(v) − angle(u) over [0, 2π) for u the edge of A's hull from its vertex i
+  // and v that of −B's hull from its vertex j: > 0 when u comes first. Exact.
+  static int angleCompare(const std::vector<P2>& a, const std::vector<int>& ha, std::size_t i, const std::vector<P2>& b,
+                          const std::vector<int>& hb, std::size_t j) {
+    const P2 u0 = at(a, false, ha[i]), u1 = at(a, false, ha[(i + 1) % ha.size()]);
+    const P2 v0 = at(b, true, hb[j]), v1 = at(b, true, hb[(j + 1) % hb.size()]);
+    const int hu = half(u0, u1), hv = half(v0, v1);
     if (hu != hv) return hu < hv ? 1 : -1;
-    return detail::sign(T(u.first * v.second - u.second * v.first));
+    return crossOfDifferencesSign(u0, u1, v0, v1);
   }
 
   // out := indices of the hull's vertices of set s (negated if asked), counter-clockwise
@@ -153,7 +182,8 @@ class DifferencePolygon {
     out.assign(2 * n + 1, -1);
     std::size_t k = 0;
     auto turnsLeft = [&](int o, int p, int q) {
-      return cross(at(s, negate, o), at(s, negate, p), at(s, negate, q)) > T(0);
+      const P2 x = at(s, negate, o), y = at(s, negate, p), z = at(s, negate, q);
+      return orient2d<T>(x.first, x.second, y.first, y.second, z.first, z.second) > 0;
     };
     for (std::size_t i = 0; i < n; ++i) {
       while (k >= 2 && !turnsLeft(out[k - 2], out[k - 1], order_[i])) --k;
