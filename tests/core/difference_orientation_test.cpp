@@ -98,6 +98,38 @@ TEST(DifferenceOrientation, DotAndDeterminantSignsAgreeWithRationals) {
   EXPECT_GT(roundedWrong, 0);  // the family reaches where rounding alone would decide wrongly
 }
 
+// A coordinate 0 in all three differences, or a zero difference, gives exactly 0 without
+// the expansions; a column that is 0 in two rows only, or tiny, still decides (against
+// rationals): vectors in a coordinate plane (normals of faces parallel to an axis), each
+// with one row nudged out of it.
+TEST(DifferenceOrientation, ZeroColumnsAndZeroDifferencesAreExactlyZero) {
+  std::mt19937 rng(2027);
+  std::uniform_real_distribution<double> U(-1, 1);
+  for (int k = 0; k < 3000; ++k) {
+    const int axis = k % 3;
+    V x(U(rng), U(rng), U(rng)), y(U(rng), U(rng), U(rng)), z(U(rng), U(rng), U(rng));
+    x[axis] = y[axis] = z[axis] = 0.0;
+    if (k % 4 == 1) z[axis] = std::ldexp(U(rng), -1000);  // a tiny column entry: not zero
+    if (k % 4 == 2) y = V::Zero();
+    const V o = V::Zero(), p0(U(rng), U(rng), U(rng));
+    const int want = exactSign(o, x, o, y, o, z);
+    ASSERT_EQ(mink::det3Sign(x, y, z), want) << "case " << k;
+    // The same as differences of points away from the origin (p0 + x − p0 rounds: compare
+    // with the exact sign of those numbers).
+    const V px = p0 + x, py = p0 + y, pz = p0 + z;
+    ASSERT_EQ(mink::orientDiff(p0, px, p0, py, p0, pz), exactSign(p0, px, p0, py, p0, pz)) << "case " << k;
+    if (k % 4 != 1) {
+      EXPECT_EQ(want, 0) << "case " << k;
+    }
+    // Dot products whose every term has a zero factor are 0; one non-zero term decides.
+    V a(U(rng), 0.0, U(rng)), b(0.0, U(rng), 0.0);
+    ASSERT_EQ(mink::dotSign(a, b), 0) << "case " << k;
+    b[2] = std::ldexp(1.0, -1000);
+    const Q dot = exact(a).dot(exact(b));
+    ASSERT_EQ(mink::dotSign(a, b), (dot > 0) - (dot < 0)) << "case " << k;
+  }
+}
+
 TEST(DifferenceOrientation, Orient3dIsTheSpecialCase) {
   std::mt19937 rng(2025);
   std::uniform_int_distribution<int> G(-3, 3);

@@ -152,6 +152,8 @@ int dotSign(const Vec3<T>& x, const Vec3<T>& y) {
     const T bound = (T(3) + T(16) * eps) * eps * (abs(p0) + abs(p1) + abs(p2)) + detail::denormalErrorBound(T(4));
     if (dot > bound) return 1;
     if (-dot > bound) return -1;
+    // Every product exactly 0 (a factor 0 in each term): the dot product is 0.
+    if ((x[0] == T(0) || y[0] == T(0)) && (x[1] == T(0) || y[1] == T(0)) && (x[2] == T(0) || y[2] == T(0))) return 0;
     return detail::exactDotSign(x, y);
   }
 }
@@ -188,6 +190,14 @@ int orientDiff(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& q0, const Ve
         (T(7) + T(56) * eps) * eps * perm + dm * (T(2) * (abs(u[0]) + abs(u[1]) + abs(u[2])) + T(4));
     if (det > bound) return 1;
     if (-det > bound) return -1;
+    // A coordinate that is 0 in all three differences, or a difference that is 0 (a
+    // rounded difference is 0 exactly where the exact one is): the determinant is exactly
+    // 0 without the expansions. Normals of faces parallel to one axis (the side faces of
+    // two upright cylinders, z = 0) reached the exact stage on every call otherwise.
+    for (int k = 0; k < 3; ++k)
+      if (u[k] == T(0) && v[k] == T(0) && w[k] == T(0)) return 0;
+    const Vec3<T> zero = Vec3<T>::Zero();
+    if (u == zero || v == zero || w == zero) return 0;
     return detail::exactOrientDiff(p0, p1, q0, q1, r0, r1);
   }
 }
