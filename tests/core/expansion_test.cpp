@@ -17,6 +17,8 @@
 #include <xmmintrin.h>
 #endif
 
+#include "support/random_doubles.hpp"
+
 namespace {
 
 using mink::detail::Expansion;
@@ -29,22 +31,7 @@ bool encloses(const Interval& i, const Q& x) {
   return le(i.lo(), x) && ge(i.hi(), x);
 }
 
-// Numbers over the whole range: zeros, denormals, tiny, unit, huge, both signs.
-double randomNumber(std::mt19937& rng) {
-  std::uniform_int_distribution<int> kind(0, 5), exponent(-1074, 1023);
-  std::uniform_real_distribution<double> mant(0.5, 1.0);
-  const double sign = rng() & 1 ? 1.0 : -1.0;
-  switch (kind(rng)) {
-    case 0:
-      return 0.0;
-    case 1:
-      return sign * std::numeric_limits<double>::denorm_min() * double(1 + rng() % 1000);
-    case 2:
-      return sign * std::ldexp(mant(rng), exponent(rng));
-    default:
-      return sign * std::ldexp(mant(rng), static_cast<int>(rng() % 40) - 20);
-  }
-}
+using mink_test::anyDouble;
 
 // Sums, differences and products of random values, chained: each interval result
 // encloses the exact result of the same operations on its exact inputs.
@@ -52,7 +39,7 @@ TEST(Interval, EnclosesEveryOperationOverTheRange) {
   std::mt19937 rng(7);
   int decided = 0;
   for (int trial = 0; trial < 4000; ++trial) {
-    const double a = randomNumber(rng), b = randomNumber(rng), c = randomNumber(rng), d = randomNumber(rng);
+    const double a = anyDouble(rng), b = anyDouble(rng), c = anyDouble(rng), d = anyDouble(rng);
     const Interval ia(a), ib(b), ic(c), id(d);
     const Q qa(a), qb(b), qc(c), qd(d);
     const Interval r1 = ia * ib - ic * id, r2 = (ia + ib) * (ic - id), r3 = r1 * r2 + ia;
@@ -255,7 +242,7 @@ void expectDotSignByRadiusIsSound(bool flushToZero) {
     const int n = 1 + trial % 4;
     const int scale = trial % 5 == 0 ? static_cast<int>(rng() % 2000) - 1000 : static_cast<int>(rng() % 60) - 30;
     double m[8];
-    for (int i = 0; i < 2 * n; ++i) m[i] = trial % 7 == 0 ? randomNumber(rng) : std::ldexp(unit(rng), scale);
+    for (int i = 0; i < 2 * n; ++i) m[i] = trial % 7 == 0 ? anyDouble(rng) : std::ldexp(unit(rng), scale);
     const bool cancel = trial % 2 == 1 && n > 1;
     if (cancel) {  // the last product cancels the others to within a few ulps
       double rest = 0;

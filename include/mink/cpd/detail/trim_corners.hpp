@@ -415,23 +415,32 @@ template <class T>
 template <class Value>
 int Trimmer<T>::namedSign(int id, const Value& value) const {
   const TrimKey& key = keys_[static_cast<std::size_t>(id)];
-  // Where long double is wider than FloatOf (x87: 11 more bits), a second filter: the
-  // corner recomputed from its name in long double intervals. The corners that reach here
-  // mostly sit at a vertex of M within the double filter's width of the cut but not on it
-  // (an edge-edge facet's fourth point is off its plane by a rounding); this stage settles
-  // most of them at a fraction of the expansions' cost (README, "The long double stage").
-  if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<FloatOf>::digits) {
-    if (cornerL_.size() < keys_.size()) cornerL_.resize(keys_.size());
-    CornerL& c = cornerL_[static_cast<std::size_t>(id)];
+  // Second filters: the corner recomputed from its name in wider intervals. The corners
+  // that reach here mostly sit at a vertex of M within the double filter's width of the
+  // cut but not on it (an edge-edge facet's fourth point is off its plane by a rounding of
+  // the inputs, about 2^-53 of the value's terms). Double-double intervals (about 106
+  // bits, core/double_double.hpp) settle them at a small fraction of the expansions' cost
+  // (README, "The double-double stage"). Long double intervals, where long double is
+  // wider (x87: 11 more bits and a far wider exponent), then settle most of what is left:
+  // products below double's range (a subnormal mesh beside a unit one), where the
+  // double-double's absolute error bound and the expansions' underflow tell nothing.
+  auto wider = [&](auto& c, auto tag) {
+    using N = decltype(tag);
     if (!c.ready) {
-      homogeneous<IVL>(key, c.X, c.W);
+      homogeneous<N>(key, c.X, c.W);
       c.ready = true;
     }
     const int sw = c.W.certainSign();
-    if (sw != 0) {
-      const int sv = value(c.X, c.W).certainSign();
-      if (sv != 0) return sv * sw;
-    }
+    if (sw == 0) return 0;
+    return value(c.X, c.W).certainSign() * sw;
+  };
+  if constexpr (std::is_same<FloatOf, double>::value && kDoubleDoubleExact) {
+    if (cornerD_.size() < keys_.size()) cornerD_.resize(keys_.size());
+    if (const int sv = wider(cornerD_[static_cast<std::size_t>(id)], IVD())) return sv;
+  }
+  if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<FloatOf>::digits) {
+    if (cornerL_.size() < keys_.size()) cornerL_.resize(keys_.size());
+    if (const int sv = wider(cornerL_[static_cast<std::size_t>(id)], IVL())) return sv;
   }
   if (cornerXIndex_.size() < keys_.size()) cornerXIndex_.resize(keys_.size(), -1);
   int& slot = cornerXIndex_[static_cast<std::size_t>(id)];

@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "mink/core/detail/flat_hash_map.hpp"
+#include "mink/core/double_double.hpp"
 #include "mink/core/expansion.hpp"
 #include "mink/core/orientation.hpp"
 #include "mink/cpd/convolution.hpp"
@@ -102,6 +103,7 @@ class Trimmer {
   using FloatOf = std::conditional_t<std::is_same<T, long double>::value, long double, double>;
   using IV = IntervalOf<FloatOf>;
   using IVL = IntervalOf<long double>;  // a tighter filter where long double is wider
+  using IVD = DoubleDoubleInterval;       // the last filter (about 106 bits; FloatOf = double)
   using EX = ExpansionOf<FloatOf>;
   struct Homog {
     IV X[3];
@@ -270,8 +272,10 @@ class Trimmer {
     hbox_.clear();
     planeCache_.clear();
     planeCacheL_.clear();
+    planeCacheD_.clear();
     planeCacheX_.clear();
     cornerL_.clear();
+    cornerD_.clear();
     cornerXIndex_.clear();
     cornerXCount_ = 0;
     exactSide_.clear();
@@ -547,6 +551,7 @@ class Trimmer {
   // made on first use (a corner's three planes are shared with the other corners they cut).
   mutable std::vector<PlaneIVCache> planeCache_;
   mutable std::vector<PlaneCacheOf<IVL>> planeCacheL_;
+  mutable std::vector<PlaneCacheOf<IVD>> planeCacheD_;
   mutable std::vector<PlaneCacheOf<EX>> planeCacheX_;
   template <class N>
   std::vector<PlaneCacheOf<N>>& planeCacheFor() const {
@@ -554,6 +559,8 @@ class Trimmer {
       return planeCache_;
     else if constexpr (std::is_same<N, IVL>::value)
       return planeCacheL_;
+    else if constexpr (std::is_same<N, IVD>::value)
+      return planeCacheD_;
     else
       return planeCacheX_;
   }
@@ -565,6 +572,12 @@ class Trimmer {
     bool ready = false;
   };
   mutable std::vector<CornerL> cornerL_;
+  // The same in double-double intervals, for the corners the long double stage leaves.
+  struct CornerD {
+    IVD X[3], W;
+    bool ready = false;
+  };
+  mutable std::vector<CornerD> cornerD_;
   // The same in expansions, for the corners whose sides the intervals cannot tell.
   struct CornerX {
     EX X[3], W;
