@@ -103,7 +103,7 @@ class Trimmer {
   using FloatOf = std::conditional_t<std::is_same<T, long double>::value, long double, double>;
   using IV = IntervalOf<FloatOf>;
   using IVL = IntervalOf<long double>;  // a tighter filter where long double is wider
-  using IVD = DoubleDoubleInterval;       // the last filter (about 106 bits; FloatOf = double)
+  using IVD = DoubleDoubleInterval;       // the first wider filter (about 106 bits; FloatOf = double)
   using EX = ExpansionOf<FloatOf>;
   struct Homog {
     IV X[3];
@@ -572,7 +572,7 @@ class Trimmer {
     bool ready = false;
   };
   mutable std::vector<CornerL> cornerL_;
-  // The same in double-double intervals, for the corners the long double stage leaves.
+  // The same in double-double intervals, asked before the long double ones (namedSign).
   struct CornerD {
     IVD X[3], W;
     bool ready = false;
