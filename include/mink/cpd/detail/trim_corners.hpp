@@ -82,7 +82,7 @@ int Trimmer<T>::cornerOn(const TrimKey& key, int F, std::uint64_t cut, int ia, i
       x[k] = T(h.x[k].mid());
       tight = T(h.x[k].hi() - h.x[k].lo()) <= std::ldexp(T(1), -40) * (absValue(x[k]) + scale);
     }
-    CornerL wide;  // made here: kept for the corner's exact predicates
+    CornerOf<IVL> wide;  // made here: kept for the corner's exact predicates
     if (!tight && std::numeric_limits<long double>::digits > std::numeric_limits<FloatOf>::digits) {
       IVL* X = wide.X;
       IVL& W = wide.W;

@@ -253,6 +253,116 @@ bool Trimmer<T>::ownedByOther(int F, const Poly& p) const {
 }
 
 template <class T>
+void Trimmer<T>::classify(MeshOverlap<T>& overlap, MinkowskiPatch<T>& out) {
+  // Each patch is classified at its largest piece (the nudge's room grows with the piece).
+  status_.assign(final_.size(), -1);
+  representative_.assign(final_.size(), -1);
+  for (std::size_t i = 0; i < final_.size(); ++i) {
+    int& r = representative_[static_cast<std::size_t>(find(static_cast<int>(i)))];
+    if (r < 0 || final_[i].area > final_[static_cast<std::size_t>(r)].area) r = static_cast<int>(i);
+  }
+  // A patch with a piece on the inner side of a polygon that crosses it is inside M:
+  // no test (-2: a patch with a wanted piece, not yet decided).
+  for (std::size_t i = 0; i < final_.size(); ++i)
+    if (final_[i].wanted) status_[static_cast<std::size_t>(find(static_cast<int>(i)))] = -2;
+  for (std::size_t i = 0; i < final_.size(); ++i) {
+    int& st = status_[static_cast<std::size_t>(find(static_cast<int>(i)))];
+    if (st == -2 && insideAcrossCut(static_cast<int>(i))) st = 0;
+  }
+  emitted_.clear();
+  for (std::size_t i = 0; i < final_.size(); ++i) {
+    if (!final_[i].wanted) continue;
+    const int root = find(static_cast<int>(i));
+    int& st = status_[static_cast<std::size_t>(root)];
+    if (st < 0) {
+      ++out.overlapTests;
+      st = onBoundary(representative_[static_cast<std::size_t>(root)], overlap) ? 1 : 0;
+    }
+    if (st == 1) emitted_.push_back(static_cast<int>(i));
+  }
+}
+
+/// A piece with a side on the plane of a polygon G that crosses its facet F, the side's
+/// open segment inside G's open polygon, and the piece on G's inner side, is inside M.
+/// Every convolution facet has M on its inner side next to its open part: FV, a point
+/// p − v with p inside a face of A, and p − εn inside A; VF, the same for B; EE (two
+/// convex edges, A's faces on one side of the facet's plane and B's on the other), the
+/// wedges of A and −B at the two edges sum to the closed half-space below the plane. So
+/// the points of the piece next to that side have M on F's outer side (below G) as well as
+/// on its inner side: they are interior points of M, not on ∂M, and neither is the piece
+/// (a piece is on ∂M wholly or not at all). Exact: signs of the corners named by their
+/// planes, as for the cuts.
+template <class T>
+bool Trimmer<T>::insideAcrossCut(int piece) const {
+  const Final& fp = final_[static_cast<std::size_t>(piece)];
+  const int* v = &finalV_[static_cast<std::size_t>(fp.first)];
+  const std::uint64_t* e = &finalE_[static_cast<std::size_t>(fp.first)];
+  for (int k = 0; k < fp.count; ++k) {
+    if (!TrimLabel::isPlane(e[k]) || TrimLabel::index(e[k]) == fp.soup) continue;
+    // The piece is convex and has this side on G's plane: its first corner off that
+    // plane tells the piece's side.
+    int s = 0;
+    for (int c = 2; c < fp.count && s == 0; ++c) s = side(fp.soup, v[(k + c) % fp.count], e[k]);
+    const int G = TrimLabel::index(e[k]);
+    if (s < 0 && openSideInPolygon(v[k], v[(k + 1) % fp.count], G) && clearOfRounding(fp, k, G)) return true;
+  }
+  return false;
+}
+
+/// The signs above are exact on the soup, whose corners a_i − b_j are rounded: the facets
+/// they stand for lie within 2^-52 of the largest coordinate S. The shortcut is taken only
+/// where that cannot matter: the side's midpoint 2^-40 S or more inside each of G's edge
+/// lines and a corner of the piece 2^-40 S or more below G's plane (else the collision
+/// test decides). Measured on the corners scaled by a power of two to a size near one.
+template <class T>
+bool Trimmer<T>::clearOfRounding(const Final& fp, int k, int G) const {
+  const Soup& g = soup_[static_cast<std::size_t>(G)];
+  const int* v = &finalV_[static_cast<std::size_t>(fp.first)];
+  double S = 0;
+  for (int c = 0; c < fp.count; ++c) S = std::max(S, toD(coords_[static_cast<std::size_t>(v[c])]).cwiseAbs().maxCoeff());
+  for (int c = 0; c < g.nc; ++c) S = std::max(S, toD(mCoord_[g.m[c]]).cwiseAbs().maxCoeff());
+  if (!(S > 0) || !std::isfinite(S)) return false;
+  int ex = 0;
+  std::frexp(S, &ex);
+  const auto scaled = [&](const Vec3<T>& x) {
+    Eigen::Vector3d y = toD(x);
+    for (int a = 0; a < 3; ++a) y[a] = std::ldexp(y[a], -ex);
+    return y;
+  };
+  const double eta = std::ldexp(1.0, -40);
+  const Eigen::Vector3d mid = 0.5 * (scaled(coords_[static_cast<std::size_t>(v[k])]) +
+                                     scaled(coords_[static_cast<std::size_t>(v[(k + 1) % fp.count])]));
+  for (int c = 0; c < g.nc; ++c) {
+    const Eigen::Vector3d u = scaled(mCoord_[g.m[c]]), w = scaled(mCoord_[g.m[(c + 1) % g.nc]]);
+    const double len = (w - u).norm();
+    if (!(len > 0) || !((w - u).cross(mid - u).norm() >= eta * len)) return false;
+  }
+  const Eigen::Vector3d g0 = scaled(mCoord_[g.m[0]]);
+  const Eigen::Vector3d n = (scaled(mCoord_[g.m[1]]) - g0).cross(scaled(mCoord_[g.m[2]]) - g0);
+  const double nl = n.norm();
+  if (!(nl > 0)) return false;
+  double below = 0;
+  for (int c = 0; c < fp.count; ++c) below = std::max(below, -(scaled(coords_[static_cast<std::size_t>(v[c])]) - mid).dot(n));
+  return below >= eta * nl;
+}
+
+/// Does the open segment between corners a and b (points of G's plane) lie inside G's open
+/// polygon: both ends inside or on each of G's edge lines, not both on one?
+template <class T>
+bool Trimmer<T>::openSideInPolygon(int a, int b, int G) const {
+  const Soup& g = soup_[static_cast<std::size_t>(G)];
+  for (int c = 0; c < g.nc; ++c) {
+    const int u = g.m[c], w = g.m[(c + 1) % g.nc];
+    // side() > 0 is the left of the edge's lower-id → higher-id end; G turns counter-clockwise.
+    const int in = u < w ? 1 : -1;
+    const std::uint64_t edge = TrimLabel::edge(u, w);
+    const int sa = in * side(G, a, edge), sb = in * side(G, b, edge);
+    if (sa < 0 || sb < 0 || (sa == 0 && sb == 0)) return false;
+  }
+  return true;
+}
+
+template <class T>
 bool Trimmer<T>::onBoundary(int piece, MeshOverlap<T>& overlap) const {
   const Final& fp = final_[static_cast<std::size_t>(piece)];
   const int F = fp.soup;

@@ -163,27 +163,11 @@ class Trimmer {
       }
     }
     out.pieces += static_cast<int>(final_.size());
-    // 2. Pieces joined into patches where no facet separates them; 3. one collision test
-    // per patch that holds a wanted piece; 4. the wanted pieces of patches on ∂M.
+    // 2. Pieces joined into patches where no facet separates them; 3. each patch that
+    // holds a wanted piece inside M by a side or by one collision test; 4. the wanted
+    // pieces of patches on ∂M.
     stitch();
-    // Each patch is classified at its largest piece (the nudge's room grows with the piece).
-    status_.assign(final_.size(), -1);
-    representative_.assign(final_.size(), -1);
-    for (std::size_t i = 0; i < final_.size(); ++i) {
-      int& r = representative_[static_cast<std::size_t>(find(static_cast<int>(i)))];
-      if (r < 0 || final_[i].area > final_[static_cast<std::size_t>(r)].area) r = static_cast<int>(i);
-    }
-    emitted_.clear();
-    for (std::size_t i = 0; i < final_.size(); ++i) {
-      if (!final_[i].wanted) continue;
-      const int root = find(static_cast<int>(i));
-      int& st = status_[static_cast<std::size_t>(root)];
-      if (st < 0) {
-        ++out.overlapTests;
-        st = onBoundary(representative_[static_cast<std::size_t>(root)], overlap) ? 1 : 0;
-      }
-      if (st == 1) emitted_.push_back(static_cast<int>(i));
-    }
+    classify(overlap, out);
     // 5. Triangles that meet edge to edge (trim_patches.hpp: conform, emit).
     conform();
     outVertex_.clear();
@@ -513,6 +497,13 @@ class Trimmer {
   /// then emits this part of ∂M)? The piece lies inside it or outside it (step 2).
   bool ownedByOther(int F, const Poly& p) const;
 
+  /// Steps 3 and 4 (trim_patches.hpp): the patches' status_, emitted_.
+  void classify(MeshOverlap<T>& overlap, MinkowskiPatch<T>& out);
+  /// Is the piece inside M by a side on a crossing polygon (trim_patches.hpp)?
+  bool insideAcrossCut(int piece) const;
+  bool openSideInPolygon(int a, int b, int G) const;
+  bool clearOfRounding(const Final& fp, int k, int G) const;
+
   /// Is the piece on ∂M? One collision test at its centroid moved outward by δ.
   bool onBoundary(int piece, MeshOverlap<T>& overlap) const;
 
@@ -565,19 +556,16 @@ class Trimmer {
       return planeCacheX_;
   }
   mutable PlaneIVCache boxCache_[6];
-  // Floating T with a wider long double: a corner's X / W in long double intervals, made
-  // from its name on its first exact predicate (a corner meets several cuts).
-  struct CornerL {
-    IVL X[3], W;
+  // Floating T: a corner's X / W in double-double (cornerD_) and long double (cornerL_,
+  // where it is wider) intervals, made from its name on its first exact predicate (a
+  // corner meets several cuts); namedSign asks them in that order.
+  template <class N>
+  struct CornerOf {
+    N X[3], W;
     bool ready = false;
   };
-  mutable std::vector<CornerL> cornerL_;
-  // The same in double-double intervals, asked before the long double ones (namedSign).
-  struct CornerD {
-    IVD X[3], W;
-    bool ready = false;
-  };
-  mutable std::vector<CornerD> cornerD_;
+  mutable std::vector<CornerOf<IVL>> cornerL_;
+  mutable std::vector<CornerOf<IVD>> cornerD_;
   // The same in expansions, for the corners whose sides the intervals cannot tell.
   struct CornerX {
     EX X[3], W;
