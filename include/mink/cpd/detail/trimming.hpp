@@ -496,7 +496,6 @@ class Trimmer {
   /// Is the piece inside a coplanar, equally oriented soup triangle of lower index (which
   /// then emits this part of ∂M)? The piece lies inside it or outside it (step 2).
   bool ownedByOther(int F, const Poly& p) const;
-
   /// Steps 3 and 4 (trim_patches.hpp): the patches' status_, emitted_.
   void classify(MeshOverlap<T>& overlap, MinkowskiPatch<T>& out);
   /// Is the piece inside M by a side on a crossing polygon (trim_patches.hpp)?
