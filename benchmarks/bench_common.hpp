@@ -15,6 +15,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -24,6 +27,19 @@
 #include <vector>
 
 namespace mink_bench {
+
+/// An argument that no option of a benchmark's parser took: returned when it is a path;
+/// "--help" / "-h" print the usage and end the program (status 0); any other argument
+/// starting with '-' (an unknown option, or one missing its value) is an error that names
+/// it, prints the usage and ends the program with status 2 (it used to be taken as the
+/// output path).
+inline const char* pathArgument(const char* arg, const char* usage) {
+  if (arg[0] != '-') return arg;
+  const bool help = std::strcmp(arg, "--help") == 0 || std::strcmp(arg, "-h") == 0;
+  if (!help) std::fprintf(stderr, "unknown option or missing value: %s\n", arg);
+  std::fprintf(help ? stdout : stderr, "%s\n", usage);
+  std::exit(help ? 0 : 2);
+}
 
 /// The q-quantile of v by linear interpolation between order statistics; NaN if v is empty.
 inline double quantile(std::vector<double> v, double q) {

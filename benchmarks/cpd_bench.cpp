@@ -218,6 +218,21 @@ struct Row {
 
 }  // namespace
 
+/// The usage, as in the comment at the top of this file.
+constexpr const char* kUsage =
+    "Usage: mink_cpd_bench [out.csv] [--quick] [--frames N] [--full-timeout S]\n"
+    "                      [--cgal-timeout S] [--method-timeout S] [--only SCENE] [--verbose]\n"
+    "  out.csv           default benchmarks/results/cpd_table2.csv (directory must exist)\n"
+    "  --frames          frames of each motion (default 20)\n"
+    "  --full-timeout    wall-time limit of the whole boundary's child, per scene (default 30)\n"
+    "  --cgal-timeout    the same for CGAL (default 30)\n"
+    "  --method-timeout  the same for brute and for sphere_tree (default 20 each)\n"
+    "  --coherent-timeout  the same for convex_maps and for box_trees (default 40 each)\n"
+    "  --only            run one scene (its name as printed, e.g. torus/torus)\n"
+    "  --verbose         every local update's time and sizes on stderr\n"
+    "  --quick           8 frames, 2 samples of the whole boundary, 10 s limits, CGAL only on\n"
+    "                    the degenerate family (smoke test, numbers not for publication)\n";
+
 int main(int argc, char** argv) {
   std::string out = "benchmarks/results/cpd_table2.csv";
   bool quick = false, verbose = false;
@@ -242,7 +257,7 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[i], "--coherent-timeout") == 0 && i + 1 < argc)
       coherentTimeout = std::atof(argv[++i]);
     else
-      out = argv[i];
+      out = mink_bench::pathArgument(argv[i], kUsage);
   }
   if (quick) {
     frames = std::min(frames, 8);

@@ -263,6 +263,14 @@ void degenerateBuilds(Csv& csv, bool quick) {
   }
 }
 
+/// The usage, as in the comment at the top of this file.
+constexpr const char* kUsage =
+    "Usage: mink_foundation_bench [out.csv] [--quick] [--builds]\n"
+    "  out.csv   default benchmarks/results/foundation.csv (directory must exist)\n"
+    "  --quick   fewer repetitions and sizes (smoke test, numbers not for publication)\n"
+    "  --builds  the build rows of section 1 (hull, anchors, hierarchy) and the degenerate\n"
+    "            shapes only\n";
+
 int main(int argc, char** argv) {
   std::string csvPath = "benchmarks/results/foundation.csv";
   bool quick = false, buildsOnly = false;
@@ -272,7 +280,7 @@ int main(int argc, char** argv) {
     } else if (std::strcmp(argv[i], "--builds") == 0) {
       buildsOnly = true;
     } else {
-      csvPath = argv[i];
+      csvPath = mink_bench::pathArgument(argv[i], kUsage);
     }
   }
   Csv csv(csvPath);

@@ -63,6 +63,12 @@ struct Row {
 
 }  // namespace
 
+/// The usage, as in the comment at the top of this file.
+constexpr const char* kUsage =
+    "Usage: mink_mesh_overlap_bench [out.csv] [--quick]\n"
+    "  out.csv  default benchmarks/results/mesh_overlap.csv (directory must exist)\n"
+    "  --quick  fewer poses (smoke test, numbers not for publication)\n";
+
 int main(int argc, char** argv) {
   std::string out = "benchmarks/results/mesh_overlap.csv";
   bool quick = false;
@@ -70,7 +76,7 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--quick") == 0)
       quick = true;
     else
-      out = argv[i];
+      out = mink_bench::pathArgument(argv[i], kUsage);
   }
   const int poses = quick ? 20 : 300, ys = 64;
   std::vector<Pair> pairs = {
