@@ -309,11 +309,13 @@ bool Trimmer<T>::insideAcrossCut(int piece) const {
   return false;
 }
 
-/// The signs above are exact on the soup, whose corners a_i − b_j are rounded: the facets
-/// they stand for lie within 2^-52 of the largest coordinate S. The shortcut is taken only
-/// where that cannot matter: the side's midpoint 2^-40 S or more inside each of G's edge
-/// lines and a corner of the piece 2^-40 S or more below G's plane (else the collision
-/// test decides). Measured on the corners scaled by a power of two to a size near one.
+/// The signs above are exact on the soup, whose corners a_i − b_j are rounded in T: the
+/// facets they stand for lie within 2^(1 − p) of the largest coordinate S (p: T's digits,
+/// 53 for double, 24 for float). The shortcut is taken only where that cannot matter: the
+/// side's midpoint 2^(13 − p) S or more inside each of G's edge lines and a corner of the
+/// piece as far below G's plane (else the collision test decides); 2^-40 S for double and
+/// for exact T (no rounding: a gate that only costs tests). Measured on the corners scaled
+/// by a power of two to a size near one.
 template <class T>
 bool Trimmer<T>::clearOfRounding(const Final& fp, int k, int G) const {
   const Soup& g = soup_[static_cast<std::size_t>(G)];
@@ -329,7 +331,8 @@ bool Trimmer<T>::clearOfRounding(const Final& fp, int k, int G) const {
     for (int a = 0; a < 3; ++a) y[a] = std::ldexp(y[a], -ex);
     return y;
   };
-  const double eta = std::ldexp(1.0, -40);
+  constexpr int digits = ScalarTraits<T>::isExact ? 53 : std::numeric_limits<T>::digits;
+  const double eta = std::ldexp(1.0, 13 - digits);
   const Eigen::Vector3d mid = 0.5 * (scaled(coords_[static_cast<std::size_t>(v[k])]) +
                                      scaled(coords_[static_cast<std::size_t>(v[(k + 1) % fp.count])]));
   for (int c = 0; c < g.nc; ++c) {
