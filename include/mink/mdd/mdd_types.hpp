@@ -348,6 +348,7 @@ template <class T>
 struct CheckedPose {
   Pose<T> pose;
   Mat3<T> inverseRotation;
+  bool identityRotation = false;  ///< pose.rotation is exactly the identity (so is its inverse)
   bool valid = false;
   bool matches(const Pose<T>& p) const {
     if (!valid) return false;
@@ -373,6 +374,7 @@ struct CheckedPose {
   void keep(const Pose<T>& p, const Mat3<T>& inverse) {
     pose = p;
     inverseRotation = inverse;
+    identityRotation = p.rotation == Mat3<T>::Identity();
     valid = true;
   }
 };

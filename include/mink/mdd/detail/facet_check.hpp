@@ -218,6 +218,7 @@ class FacetCheck {
     const T mu = std::min(T(1), std::max(T(0), T(cross2(A, U) / den)));
     wP_ = p0 + lambda * (p1 - p0);
     wQ_ = q0 + mu * (q1 - q0);
+    edgePairSolved_ = true;
     return true;
   }
 
@@ -349,6 +350,7 @@ class FacetCheck {
     const ConvexPolyhedron<T>& P = F_.P();
     wP_ = Vec3<T>::Zero();
     wQ_ = Vec3<T>::Zero();
+    edgePairSolved_ = false;
     const int nq = static_cast<int>(cache_.setQ.size());
     for (int i = 0; i < loc.count; ++i) {
       // ids are i·|setQ| + j >= 0; no division for the common sizes (FV 1, EE 2).
@@ -361,6 +363,9 @@ class FacetCheck {
 
   const Vec3<T>& witnessP() const { return wP_; }
   const Vec3<T>& witnessQ() const { return wQ_; }
+  /// Do the witnesses come from an EE face's own two edge parameters (faceHit's
+  /// insideParallelogram), rather than from fan-triangle weights or a support-set hull?
+  bool edgePairSolved() const { return edgePairSolved_; }
   const T& tolerance() const { return tol_; }
 
   /// A length given in 2^-e units (slackUnits) back in the scene's units.
@@ -375,6 +380,7 @@ class FacetCheck {
   void setWitnessPair(const Vec3<T>& wP, const Vec3<T>& wQ) {
     wP_ = wP;
     wQ_ = wQ;
+    edgePairSolved_ = false;
   }
 
   /// |n| for slack computations; 0 for exact T (whose slack numTol_ is 0).
@@ -396,6 +402,7 @@ class FacetCheck {
   Vec3<T> u1_, u2_;
   int unitExp_ = 0;  // inexact T: PairFrame::unitScaleExponent (u1_, u2_ are 2^-e units)
   Vec3<T> wP_ = Vec3<T>::Zero(), wQ_ = Vec3<T>::Zero();
+  bool edgePairSolved_ = false;  // see edgePairSolved()
 };
 
 }  // namespace detail

@@ -38,8 +38,7 @@ class MddDriver {
         cache_(cache),
         options_(options),
         rel_(relativePose(P, poseP, Q, poseQ, cache)),
-        RPt_(rel_.RPt),
-        sl_(RPt_ * s),
+        sl_(rel_.directionToLocal(s)),
         F_(P, Q, rel_.R, rel_.t, options.useHierarchy),
         search_(F_, sl_, cache, options, res_),
         check_(search_.check()),
@@ -58,7 +57,7 @@ class MddDriver {
     if (cd.kind == Kind::Outside) {
       // The separating direction and its support vertices: why the line misses (and what
       // mddExact certifies a NoContact with).
-      res_.normal = RPt_.transpose() * cd.w;  // w . (RPt_ s) == (RPt_^T w) . s: still orthogonal to s
+      res_.normal = rel_.directionToWorld(cd.w);  // w . (RPt s) == (RPt^T w) . s: still orthogonal to s
       if constexpr (!ScalarTraits<T>::isExact) {
         const T len = res_.normal.stableNorm();
         if (len > T(0)) res_.normal /= len;
@@ -131,7 +130,9 @@ class MddDriver {
   }
 
  private:
-  Vec3<T> toWorld(const Vec3<T>& x) const { return Vec3<T>(poseP_.rotation * x + poseP_.translation); }
+  Vec3<T> toWorld(const Vec3<T>& x) const {
+    return rel_.identityP ? Vec3<T>(x + poseP_.translation) : Vec3<T>(poseP_.rotation * x + poseP_.translation);
+  }
 
   MddResult<T> noContact() {
     res_.status = MddStatus::NoContact;
@@ -209,12 +210,14 @@ class MddDriver {
     // a single vertex (FV, VF): the other witness is that vertex moved by the motion.
     // Barycentric weights in a sliver fan triangle of the face would leave it 1e-5 off.
     if constexpr (!ScalarTraits<T>::isExact) {
-      if (res_.faceType == MddFaceType::EE && res_.featureP >= 0 && res_.featureQ >= 0) {
+      if (res_.faceType == MddFaceType::EE && res_.featureP >= 0 && res_.featureQ >= 0 && !check_.edgePairSolved()) {
         // An EE face is a parallelogram e_P − e_Q, as long and thin as its edges are
         // unequal (a 3-unit edge against a 1e12 one): its fan triangles' barycentric
         // weights are ill-conditioned there. Solve p0 + λ dp − (q0 + μ dq) = param s in
         // the face's plane directly instead (Lagrange's identity; the edges are not
-        // parallel, or the face would not exist).
+        // parallel, or the face would not exist). Not where the facet check solved the
+        // same two edge parameters already (its four exact side signs put the line inside
+        // the parallelogram: FacetCheck::insideParallelogram).
         const auto ep = P_.edgeVertices(res_.featureP);
         const auto eq = Q_.edgeVertices(res_.featureQ);
         const Vec3<T> p0 = toWorld(P_.vertex(ep.first)), dp = toWorld(P_.vertex(ep.second)) - p0;
@@ -249,7 +252,7 @@ class MddDriver {
       // along a grazing line (1e-7 of a 1e26 scene), the crossing found along s, on the
       // line and on the facet, is the better pair.
       if (res_.faceType != MddFaceType::Grazing && check_.inUnits(r2).norm() > check_.slackUnits(check_.slack()) &&
-          check_.witnessesAt(Vec3<T>(param * sl_), Vec3<T>(RPt_ * res_.normal))) {
+          check_.witnessesAt(Vec3<T>(param * sl_), rel_.directionToLocal(res_.normal))) {
         res_.witnessP = toWorld(check_.witnessP());
         res_.witnessQ = toWorld(check_.witnessQ());
       }
@@ -271,7 +274,7 @@ class MddDriver {
     res_.faceType = f.type;
     res_.featureP = f.a;
     res_.featureQ = f.b;
-    res_.normal = unitOrExact(Vec3<T>(RPt_.transpose() * f.N));
+    res_.normal = unitOrExact(rel_.directionToWorld(f.N));
     res_.witnessP = toWorld(check_.witnessP());
     res_.witnessQ = toWorld(check_.witnessQ());
   }
@@ -358,7 +361,7 @@ class MddDriver {
     res_.faceType = MddFaceType::Grazing;
     res_.featureP = vp;
     res_.featureQ = vq;
-    res_.normal = unitOrExact(Vec3<T>(RPt_.transpose() * w));
+    res_.normal = unitOrExact(rel_.directionToWorld(w));
     const T param = (tlo <= T(0) && thi >= T(0)) ? T(0) : (tlo > T(0) ? tlo : thi);
     // Witnesses: the contact is on the facet; report the support vertices' pair moved
     // onto the line (exact contact points need the segment, which a caller rarely uses).
@@ -376,7 +379,6 @@ class MddDriver {
   MddCache<T>& cache_;
   const MddOptions<T>& options_;
   const RelativePose<T> rel_;
-  const Mat3<T> RPt_;
   const Vec3<T> sl_;  // s in P's frame
   PairFrame<T> F_;
   MddResult<T> res_;

@@ -87,11 +87,16 @@ template <class T>
 
 /// Q's placement in P's frame (R, t) and P's world-to-local rotation RPt, for a pair that
 /// passed checkPlacedPair; resets the cache's hints when it last served another pair of
-/// shapes.
+/// shapes. `identityP`: P's rotation is exactly the identity (a shape placed in world
+/// coordinates), so products with RPt are skipped: x, not 1·x + 0·y + 0·z, which is the
+/// same number (but for the sign of a zero).
 template <class T>
 struct RelativePose {
   Mat3<T> RPt, R;
   Vec3<T> t;
+  bool identityP = false;
+  Vec3<T> directionToLocal(const Vec3<T>& world) const { return identityP ? world : Vec3<T>(RPt * world); }
+  Vec3<T> directionToWorld(const Vec3<T>& local) const { return identityP ? local : Vec3<T>(RPt.transpose() * local); }
 };
 
 template <class T>
@@ -113,8 +118,14 @@ RelativePose<T> relativePose(const ConvexPolyhedron<T>& P, const Pose<T>& poseP,
     rel.RPt = poseP.rotation.inverse();
     cache.checkedPoseP.keep(poseP, rel.RPt);
   }
-  rel.R = rel.RPt * poseQ.rotation;
-  rel.t = rel.RPt * (poseQ.translation - poseP.translation);
+  rel.identityP = cache.checkedPoseP.identityRotation;
+  if (rel.identityP) {
+    rel.R = poseQ.rotation;
+    rel.t = poseQ.translation - poseP.translation;
+  } else {
+    rel.R = rel.RPt * poseQ.rotation;
+    rel.t = rel.RPt * (poseQ.translation - poseP.translation);
+  }
   return rel;
 }
 
