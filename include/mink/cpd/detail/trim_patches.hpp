@@ -304,7 +304,7 @@ bool Trimmer<T>::insideAcrossCut(int piece) const {
     int s = 0;
     for (int c = 2; c < fp.count && s == 0; ++c) s = side(fp.soup, v[(k + c) % fp.count], e[k]);
     const int G = TrimLabel::index(e[k]);
-    if (s < 0 && openSideInPolygon(v[k], v[(k + 1) % fp.count], G) && clearOfRounding(fp, k, G)) return true;
+    if (s < 0 && clearOfRounding(fp, k, G) && openSideInPolygon(v[k], v[(k + 1) % fp.count], G)) return true;
   }
   return false;
 }
@@ -326,11 +326,7 @@ bool Trimmer<T>::clearOfRounding(const Final& fp, int k, int G) const {
   if (!(S > 0) || !std::isfinite(S)) return false;
   int ex = 0;
   std::frexp(S, &ex);
-  const auto scaled = [&](const Vec3<T>& x) {
-    Eigen::Vector3d y = toD(x);
-    for (int a = 0; a < 3; ++a) y[a] = std::ldexp(y[a], -ex);
-    return y;
-  };
+  const auto scaled = [&](const Vec3<T>& x) { return timesPow2(toD(x), -ex); };
   constexpr int digits = ScalarTraits<T>::isExact ? 53 : std::numeric_limits<T>::digits;
   const double eta = std::ldexp(1.0, 13 - digits);
   const Eigen::Vector3d mid = 0.5 * (scaled(coords_[static_cast<std::size_t>(v[k])]) +
@@ -378,14 +374,7 @@ bool Trimmer<T>::onBoundary(int piece, MeshOverlap<T>& overlap) const {
   // f.n, their cross product in T, underflows for a facet of a mesh 2^-500 beside one
   // of size 1 (a NaN offset then sent every exact test to its slowest path). F's
   // dominant axis where even that rounds to zero.
-  const auto scaledSide = [&](int c) {
-    Eigen::Vector3d e = toD(Vec3<T>(mCoord_[f.m[c]] - mCoord_[f.m[0]]));
-    int k = 0;
-    const double m = e.cwiseAbs().maxCoeff();
-    if (m > 0 && std::isfinite(m)) std::frexp(m, &k);
-    for (int a = 0; a < 3; ++a) e[a] = std::ldexp(e[a], -k);
-    return e;
-  };
+  const auto scaledSide = [&](int c) { return unitOrder(toD(Vec3<T>(mCoord_[f.m[c]] - mCoord_[f.m[0]]))); };
   Eigen::Vector3d nd = scaledSide(1).cross(scaledSide(2));
   if (const double len = nd.norm(); len > 0 && std::isfinite(len)) {
     nd /= len;

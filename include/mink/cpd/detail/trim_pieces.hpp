@@ -238,11 +238,7 @@ bool Trimmer<T>::isSliver(const Poly& p) const {
   if (!(size > 0)) return true;
   int e = 0;
   std::frexp(size, &e);
-  const auto at = [&](std::size_t i) {
-    Eigen::Vector3d x = toD(coords_[static_cast<std::size_t>(p.v[i])]);
-    for (int k = 0; k < 3; ++k) x[k] = std::ldexp(x[k], -e);
-    return x;
-  };
+  const auto at = [&](std::size_t i) { return timesPow2(toD(coords_[static_cast<std::size_t>(p.v[i])]), -e); };
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
   const Eigen::Vector3d x0 = at(0);
   for (std::size_t i = 1; i + 1 < p.v.size(); ++i) n += (at(i) - x0).cross(at(i + 1) - x0);
