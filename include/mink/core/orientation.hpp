@@ -546,6 +546,24 @@ int orient3d(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>
   }
 }
 
+namespace detail {
+/// The sign of left − right for two products of rounded differences of inputs in T
+/// (u_x v_y and u_y v_x, each difference rounded once): +1 or −1 where Shewchuk's
+/// ccwerrboundA, (3 + 16 eps) eps with eps the unit roundoff, plus half a denormal of
+/// absolute error for each product that falls below the normal range (bounded without
+/// denormal arithmetic, as in orient3d), makes it certain; 0 where it cannot tell.
+template <class T>
+inline int orient2dFilter(const T& left, const T& right) {
+  using std::abs;
+  const T det = left - right;
+  constexpr T eps = std::numeric_limits<T>::epsilon() / T(2);
+  const T bound = (T(3) + T(16) * eps) * eps * (abs(left) + abs(right)) + denormalErrorBound(T(2));
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  return 0;
+}
+}  // namespace detail
+
 /// Exact sign of (b − a) × (c − a) = (bx − ax)(cy − ay) − (by − ay)(cx − ax) for the
 /// plane points a = (ax, ay), b, c: > 0 when they turn counter-clockwise. Same method
 /// and range as orient3d (see the header comment).
@@ -557,17 +575,7 @@ int orient2d(const T& ax, const T& ay, const T& bx, const T& by, const T& cx, co
     return orient2d<double>(ax, ay, bx, by, cx, cy);
   } else {
     const T ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
-    const T left = ux * vy, right = uy * vx;
-    const T det = left - right;
-    using std::abs;
-    // Shewchuk's ccwerrboundA, (3 + 16 eps) eps with eps the unit roundoff, for the
-    // rounded differences, products and their difference; plus half a denormal of
-    // absolute error for each product that falls below the normal range (bounded without
-    // denormal arithmetic, as in orient3d).
-    constexpr T eps = std::numeric_limits<T>::epsilon() / T(2);
-    const T bound = (T(3) + T(16) * eps) * eps * (abs(left) + abs(right)) + detail::denormalErrorBound(T(2));
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
+    if (const int f = detail::orient2dFilter<T>(ux * vy, uy * vx)) return f;
     // Both products exactly 0 (a rounded difference is 0 only where the exact one is):
     // points sharing a coordinate, e.g. a contact plane z = 0 seen along an axis, would
     // otherwise reach the exact stage on every call (43% of a resting 1,024-gon query).

@@ -44,16 +44,19 @@ template <class T>
 int crossOfDifferencesSign(const std::pair<T, T>& p0, const std::pair<T, T>& p1, const std::pair<T, T>& q0,
                            const std::pair<T, T>& q1) {
   if constexpr (std::is_same<T, double>::value) {
-    const T left = (p1.first - p0.first) * (q1.second - q0.second);
-    const T right = (p1.second - p0.second) * (q1.first - q0.first);
-    const T det = left - right;
-    constexpr T eps = std::numeric_limits<T>::epsilon() / T(2);
-    const T bound = (T(3) + T(16) * eps) * eps * (std::fabs(left) + std::fabs(right)) + detail::denormalErrorBound(T(2));
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
+    if (const int f = orient2dFilter<T>((p1.first - p0.first) * (q1.second - q0.second),
+                                     (p1.second - p0.second) * (q1.first - q0.first)))
+      return f;
   }
   auto lift = [](const std::pair<T, T>& x) { return Vec3<T>(x.first, x.second, T(0)); };
   return orientDiff<T>(lift(p0), lift(p1), lift(q0), lift(q1), Vec3<T>(T(0), T(0), T(0)), Vec3<T>(T(0), T(0), T(1)));
+}
+
+/// 0 for a direction (dx, dy) with polar angle in [0, π), 1 for [π, 2π) (the zero vector:
+/// 1). Exact for a rounded difference q − p, whose signs (and zeros) are the exact one's.
+template <class T>
+int halfPlaneOf(const T& dx, const T& dy) {
+  return (dy > T(0) || (dy == T(0) && dx > T(0))) ? 0 : 1;
 }
 
 /// The orientation of the closed polygon p_0 ... p_{n-1} (point(k) returns p_k as a pair of
@@ -68,10 +71,8 @@ int crossOfDifferencesSign(const std::pair<T, T>& p0, const std::pair<T, T>& p1,
 template <class T, class PointAt>
 int convexCycleOrientation(std::size_t n, const PointAt& point) {
   if (n < 3) return 0;
-  // 0 for directions in [0, pi), 1 for [pi, 2 pi).
-  auto half = [](const T& dx, const T& dy) { return (dy > T(0) || (dy == T(0) && dx > T(0))) ? 0 : 1; };
   auto a = point(n - 1), b = point(0);
-  int before = half(T(b.first - a.first), T(b.second - a.second));
+  int before = halfPlaneOf(T(b.first - a.first), T(b.second - a.second));
   int orientation = 0, wraps = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const auto c = point(k + 1 < n ? k + 1 : 0);
@@ -80,7 +81,7 @@ int convexCycleOrientation(std::size_t n, const PointAt& point) {
     const int o = orient2d<T>(a.first, a.second, b.first, b.second, c.first, c.second);
     if (o == 0 || (orientation != 0 && o != orientation)) return 0;
     orientation = o;
-    const int after = half(T(c.first - b.first), T(c.second - b.second));
+    const int after = halfPlaneOf(T(c.first - b.first), T(c.second - b.second));
     wraps += before == 0 && after == 1;
     before = after;
     a = b;
@@ -134,12 +135,8 @@ class DifferencePolygon {
   static P2 at(const std::vector<P2>& s, bool negate, int k) {
     return negate ? P2(T(-s[k].first), T(-s[k].second)) : s[k];
   }
-  // 0 for polar angles in [0, π), 1 for [π, 2π): exact from the rounded difference q − p,
-  // whose signs (and zeros) are those of the exact one.
-  static int half(const P2& p, const P2& q) {
-    const T dx = T(q.first - p.first), dy = T(q.second - p.second);
-    return (dy > T(0) || (dy == T(0) && dx > T(0))) ? 0 : 1;
-  }
+  // The half-plane of the direction from p to q (halfPlaneOf).
+  static int half(const P2& p, const P2& q) { return halfPlaneOf(T(q.first - p.first), T(q.second - p.second)); }
   // Sign of angle(v) − angle(u) over [0, 2π) for u the edge of A's hull from its vertex i
   // and v that of −B's hull from its vertex j: > 0 when u comes first. Exact.
   static int angleCompare(const std::vector<P2>& a, const std::vector<int>& ha, std::size_t i, const std::vector<P2>& b,
