@@ -74,7 +74,7 @@ class MddDriver {
   /// c = α s strictly inside M: the exit towards the origin first (it decides separated:
   /// the exit is the answer), then, the origin inside M, the exit the other way and the
   /// nearer of the two (d_min, section III-C).
-  MddResult<T> fromInterior(const CentreOfDuality<T>& cd) {
+  const MddResult<T>& fromInterior(const CentreOfDuality<T>& cd) {
     const Vec3<T>& c = cd.c;
     const T alphaNum = c.dot(sl_);  // sign of alpha
     // Towards the origin first: it decides separated (the exit is the answer) or not.
@@ -134,7 +134,7 @@ class MddDriver {
     return rel_.identityP ? Vec3<T>(x + poseP_.translation) : Vec3<T>(poseP_.rotation * x + poseP_.translation);
   }
 
-  MddResult<T> noContact() {
+  const MddResult<T>& noContact() {
     res_.status = MddStatus::NoContact;
     res_.faceType = MddFaceType::None;
     if constexpr (std::numeric_limits<T>::has_infinity) {
@@ -192,7 +192,7 @@ class MddDriver {
   /// No answer within the caps: IterationLimit, with NaN distance, translation and
   /// parameter for floating-point T (never a value a caller could take for a contact);
   /// exact T has no NaN and leaves them 0.
-  MddResult<T> iterationLimit() {
+  const MddResult<T>& iterationLimit() {
     res_.status = MddStatus::IterationLimit;
     res_.path = MddPath::None;
     res_.faceType = MddFaceType::None;
@@ -203,7 +203,7 @@ class MddDriver {
   }
 
   /// The answer at line parameter `param` (of s): translation, witnesses, status.
-  MddResult<T> finish(const T& param) {
+  const MddResult<T>& finish(const T& param) {
     res_.parameter = param;
     res_.translation = param * slen_;
     // witnessP − witnessQ = parameter · s by construction where one side of the facet is
@@ -299,7 +299,7 @@ class MddDriver {
   // every face plane, answers; it needs no centre of duality. A cap the caller set
   // (options.maxVisits) is respected: IterationLimit; so is the cap on the edge pairs the
   // chord visits (options.maxExhaustivePairs).
-  MddResult<T> fromChord() {
+  const MddResult<T>& fromChord() {
     if constexpr (!ScalarTraits<T>::isExact) {
       if (search_.exhaustiveAllowed() && (search_.checkFailed() || options_.maxVisits < 0)) {
         res_.usedFallback = true;  // the chord visits every edge pair
@@ -351,7 +351,7 @@ class MddDriver {
 
   // The line lies in the supporting plane w·x = k of M (k = 0 up to rounding): it meets
   // M only in that plane's facet, in [tlo, thi] (case 2 of section IV-A).
-  MddResult<T> fromGrazing(const Vec3<T>& wIn) {
+  const MddResult<T>& fromGrazing(const Vec3<T>& wIn) {
     // To unit order: w's norm scales the support sets' slack.
     const Vec3<T> w = unitOrder(wIn);
     res_.path = MddPath::Grazing;
