@@ -145,6 +145,7 @@ class FacetCheck {
   bool faceHit(const MFace<T>& m) {
     const ConvexPolyhedron<T>& P = F_.P();
     const ConvexPolyhedron<T>& Q = F_.Q();
+    edgePairSolved_ = false;  // also where this face fails: no earlier face's flag survives
     cache_.setP.clear();
     cache_.setQ.clear();
     cache_.points2.clear();
@@ -300,6 +301,7 @@ class FacetCheck {
 
   /// Does the line cross (within `slack`) the hull of setP − setQ? Fills the witnesses.
   bool hitSets(const T& slack) {
+    edgePairSolved_ = false;
     facetPolygon(u1_, u2_, Vec3<T>::Zero());
     OriginLocation<T> loc;
     if (!locateOrigin2(cache_.points2, cache_.hull2, loc, slackUnits(slack))) return false;
